@@ -1,0 +1,82 @@
+// Exact geometric predicates on (weighted) points, all in one place.
+//
+// Every predicate follows one pattern: a floating-point evaluation with a
+// proven error bound (semi-static filter); when the bound cannot certify the
+// sign, an exact evaluation (128-bit integers when the inputs are small
+// dyadic numbers such as grid coordinates, GMP otherwise); and, for the
+// power test only, Simulation of Simplicity when the exact value is zero.
+//
+// The perturbation (Devillers & Teillaud 2011, weights perturbed) raises the
+// weight of point i by eps^(N-i): the point with the larger input index has
+// the larger perturbation, so results are reproducible and independent of
+// memory layout or insertion order. Orientation is never perturbed: the
+// triangulation only needs its exact sign, and flat cells cannot arise from
+// a regular triangulation of the perturbed points.
+//
+// A Kernel is cheap to create and owns its counters; it is not shared
+// between threads: one per triangulation.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "alpha/geometry.hpp"
+
+namespace alpha {
+
+struct StageCounts {
+  std::uint64_t filtered = 0;   // decided by the floating-point filter
+  std::uint64_t exact = 0;      // needed exact arithmetic, nonzero result
+  std::uint64_t perturbed = 0;  // exact value zero: decided symbolically
+  std::uint64_t calls() const { return filtered + exact + perturbed; }
+  StageCounts& operator+=(const StageCounts& o) {
+    filtered += o.filtered, exact += o.exact, perturbed += o.perturbed;
+    return *this;
+  }
+};
+
+struct PredicateStats {
+  StageCounts orient;  // orient3d (exact zero counts as 'perturbed' = degenerate)
+  StageCounts power;   // power test against a cell's orthosphere
+};
+
+class Kernel {
+public:
+  // `weights` may be null (unweighted: all weights zero). Arrays are borrowed.
+  Kernel(const Vec3* points, const double* weights) : pts_(points), w_(weights) {}
+
+  // Sign of det[b-a, c-a, d-a]: +1 when d lies on the side of plane abc
+  // from which a,b,c appear counter-clockwise. Exact, may be 0.
+  int orient3d(Index a, Index b, Index c, Index d);
+  int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+  // Whether point p conflicts with the positively oriented cell (a,b,c,d):
+  // its power distance to the cell's orthosphere is negative (for unweighted
+  // points: p strictly inside the circumsphere). Perturbed: never undecided.
+  bool power_conflict(Index a, Index b, Index c, Index d, Index p);
+
+  // The same for the infinite cell (a,b,c,inf), where the hull facet (a,b,c)
+  // is oriented so that orient3d(a,b,c,q) > 0 for q outside the hull: p
+  // conflicts when it sees the facet from outside or, coplanar with it,
+  // lies inside its orthocircle (perturbed as above).
+  bool hull_conflict(Index a, Index b, Index c, Index p);
+
+  // Exact sign of the unperturbed power test (for checks): +1 conflict,
+  // 0 on the orthosphere, -1 outside.
+  int power_side_exact(Index a, Index b, Index c, Index d, Index p);
+
+  const PredicateStats& stats() const { return stats_; }
+
+private:
+  const Vec3* pts_;
+  const double* w_;
+  PredicateStats stats_;
+
+  double weight(Index i) const { return w_ ? w_[i] : 0.0; }
+  // Unperturbed sign of the lifted determinant; conflict when negative.
+  int power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p,
+                     double wp, bool& filtered);
+  bool perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p,
+                          Index pid);
+};
+
+}  // namespace alpha

@@ -1,0 +1,21 @@
+// Insertion order for incremental construction: a Biased Randomized
+// Insertion Order (Amenta, Choi & Rote 2003) whose rounds are each sorted
+// along a Hilbert curve, so consecutive points are close (short walks, warm
+// caches) while the randomization keeps the expected cost optimal.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "alpha/geometry.hpp"
+
+namespace alpha {
+
+// Order of the given point indices; deterministic for a given seed.
+std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> indices,
+                              std::uint64_t seed = 0x5eed);
+
+// 63-bit Hilbert-curve key of each index within the bounding box of the points.
+std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices);
+
+}  // namespace alpha

@@ -1,0 +1,103 @@
+// Regular (weighted Delaunay) triangulation of points in 3D; the Delaunay
+// triangulation is the special case of no weights.
+//
+// Built incrementally in a BRIO/Hilbert order: locate by a visibility walk,
+// remove the cells in conflict with the new point and join the point to the
+// boundary of that cavity. All decisions go through the exact, perturbed
+// predicates of Kernel, so any input (grids, cospherical or coplanar subsets,
+// duplicates) gives a valid triangulation, the same on every run.
+//
+// Storage is flat: each cell holds 4 vertex and 4 neighbour indices; the
+// neighbour k lies across the facet opposite vertex k. A vertex id is the
+// index of its input point. Hull facets are joined to the vertex kInfinite,
+// so every cell has exactly 4 neighbours. Cells are positively oriented:
+// orient3d(v0,v1,v2,v3) > 0, with kInfinite read as a point beyond the hull.
+#pragma once
+#include <array>
+#include <cassert>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "alpha/geometry.hpp"
+#include "alpha/predicates.hpp"
+
+namespace alpha {
+
+enum class PointStatus : std::uint8_t {
+  vertex,     // a vertex of the triangulation
+  duplicate,  // same coordinates as another input point (see representative)
+  hidden,     // a weighted point whose ball is redundant: no cell uses it
+};
+
+// For a cell with vertices v0..v3, kFacet[i] lists the local indices of the
+// facet opposite vertex i in an order that sees vertex i on its positive side.
+inline constexpr std::array<std::array<int, 3>, 4> kFacet{{{2, 1, 3}, {0, 2, 3}, {1, 0, 3}, {0, 1, 2}}};
+
+struct Cell {
+  std::array<Index, 4> v;  // vertices
+  std::array<Index, 4> n;  // neighbours, n[k] opposite v[k]
+};
+
+class Triangulation {
+public:
+  // Throws alpha::Error for unusable input: non-finite or out-of-range
+  // values, weights not matching points, fewer than 4 distinct points, all
+  // points collinear or coplanar. Duplicates are merged: the point with the
+  // largest weight (then the smallest index) represents the others.
+  explicit Triangulation(std::vector<Vec3> points, std::vector<double> weights = {});
+
+  // Input points.
+  std::size_t num_points() const { return points_.size(); }
+  std::span<const Vec3> points() const { return points_; }
+  const Vec3& point(Index i) const { return points_[i]; }
+  bool weighted() const { return !weights_.empty(); }
+  std::span<const double> weights() const { return weights_; }
+  double weight(Index i) const { return weights_.empty() ? 0.0 : weights_[i]; }
+  PointStatus status(Index i) const { return status_[i]; }
+  // For a duplicate, the point that represents it; otherwise the point itself.
+  Index representative(Index i) const { return representative_[i]; }
+  std::size_t num_vertices() const { return num_vertices_; }  // finite ones
+  std::size_t num_duplicates() const { return num_duplicates_; }
+  std::size_t num_hidden() const { return num_hidden_; }
+
+  // Cells, finite and infinite.
+  std::size_t num_cells() const { return cells_.size(); }
+  std::size_t num_finite_cells() const { return num_finite_cells_; }
+  const Cell& cell(Index c) const {
+    assert(c < cells_.size());
+    return cells_[c];
+  }
+  std::span<const Cell> cells() const { return cells_; }
+  bool is_infinite(Index c) const { return infinite_position(c) >= 0; }
+  // Position of kInfinite in cell c, or -1 for a finite cell.
+  int infinite_position(Index c) const;
+  // Local index of vertex v in cell c (v must be in c).
+  int index_of(Index c, Index v) const;
+  // The local index of c in cell(c).n[k], i.e. the facet seen from the other side.
+  int mirror_index(Index c, int k) const { return index_of_neighbor(cells_[c].n[k], c); }
+  // One cell incident to vertex v (v a vertex), kNone otherwise.
+  Index incident_cell(Index v) const { return vertex_cell_[v]; }
+
+  // How often each predicate stage decided during construction.
+  const PredicateStats& predicate_stats() const { return stats_; }
+  // A kernel on the same points, for callers that need exact predicates.
+  Kernel kernel() const { return Kernel(points_.data(), weights_.empty() ? nullptr : weights_.data()); }
+  // Heap bytes held by this object.
+  std::size_t memory_bytes() const;
+
+private:
+  class Builder;
+  std::vector<Vec3> points_;
+  std::vector<double> weights_;
+  std::vector<PointStatus> status_;
+  std::vector<Index> representative_;
+  std::vector<Cell> cells_;
+  std::vector<Index> vertex_cell_;
+  std::size_t num_vertices_ = 0, num_duplicates_ = 0, num_hidden_ = 0, num_finite_cells_ = 0;
+  PredicateStats stats_;
+
+  int index_of_neighbor(Index c, Index n) const;
+};
+
+}  // namespace alpha

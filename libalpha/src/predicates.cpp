@@ -1,0 +1,164 @@
+#include "alpha/predicates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact.hpp"
+
+namespace alpha {
+namespace {
+
+// Magnitudes outside this range could underflow or overflow in the filters'
+// bounds; such calls go straight to exact arithmetic.
+bool in_filter_range(double m) { return m > 1e-60 && m < 1e60; }
+
+// Semi-static filter of orient3d: with u = 2^-53 the rounding error of the
+// evaluation below (differences included) is at most (7 + 56u) u times the
+// permanent (Shewchuk 1997), and the permanent is at most 6 mx my mz.
+constexpr double kOrientBound = 4.7e-15;
+// Power test: the 3x3 minors carry the bound above, each lifted value an
+// error below 7u (|d|^2 + |dw|), products and the 4-term sum add 4u; summed
+// over 4 terms this is below 432u mx my mz mh = 4.8e-14 mx my mz mh.
+constexpr double kPowerBound = 5.0e-14;
+
+// Returns the sign, or 2 when the filter cannot decide.
+int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
+  const double det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+  const double mx = std::max({std::fabs(ux), std::fabs(vx), std::fabs(wx)});
+  const double my = std::max({std::fabs(uy), std::fabs(vy), std::fabs(wy)});
+  const double mz = std::max({std::fabs(uz), std::fabs(vz), std::fabs(wz)});
+  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz)) return 2;
+  const double eps = kOrientBound * mx * my * mz;
+  if (det > eps) return 1;
+  if (det < -eps) return -1;
+  return 2;
+}
+
+int filtered_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
+  double r[4][4];
+  double mx = 0, my = 0, mz = 0, mh = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double x = q[i]->x - p.x, y = q[i]->y - p.y, z = q[i]->z - p.z;
+    const double dw = w[i] - wp;
+    const double s = x * x + y * y + z * z;
+    r[i][0] = x, r[i][1] = y, r[i][2] = z, r[i][3] = s - dw;
+    mx = std::max(mx, std::fabs(x));
+    my = std::max(my, std::fabs(y));
+    mz = std::max(mz, std::fabs(z));
+    mh = std::max(mh, s + std::fabs(dw));
+  }
+  // 2x2 minors of the xy columns, then 3x3 minors with z, then along h.
+  auto m2 = [&](int i, int j) { return r[i][0] * r[j][1] - r[j][0] * r[i][1]; };
+  const double m01 = m2(0, 1), m02 = m2(0, 2), m03 = m2(0, 3), m12 = m2(1, 2), m13 = m2(1, 3),
+               m23 = m2(2, 3);
+  const double m012 = r[0][2] * m12 - r[1][2] * m02 + r[2][2] * m01;
+  const double m013 = r[0][2] * m13 - r[1][2] * m03 + r[3][2] * m01;
+  const double m023 = r[0][2] * m23 - r[2][2] * m03 + r[3][2] * m02;
+  const double m123 = r[1][2] * m23 - r[2][2] * m13 + r[3][2] * m12;
+  const double det = -r[0][3] * m123 + r[1][3] * m023 - r[2][3] * m013 + r[3][3] * m012;
+  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz) ||
+      !in_filter_range(mh))
+    return 2;
+  const double eps = kPowerBound * mx * my * mz * mh;
+  if (det > eps) return 1;
+  if (det < -eps) return -1;
+  return 2;
+}
+
+}  // namespace
+
+int Kernel::orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const int s = filtered_orient3d(a, b, c, d);
+  if (s != 2) {
+    ++stats_.orient.filtered;
+    return s;
+  }
+  const int e = exact::orient3d(a, b, c, d);
+  ++(e != 0 ? stats_.orient.exact : stats_.orient.perturbed);
+  return e;
+}
+
+int Kernel::orient3d(Index a, Index b, Index c, Index d) {
+  return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]);
+}
+
+int Kernel::power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p, double wp,
+                           bool& filtered) {
+  const int s = filtered_power_det(q, wq, p, wp);
+  filtered = s != 2;
+  return filtered ? s : exact::power_det(q, wq, p, wp);
+}
+
+// With the weight of point i raised by eps_i, the lifted determinant D (p
+// conflicts when D < 0) changes by -eps_i * cofactor_i, and the cofactor of a
+// cell vertex is -orient3d(cell with that vertex replaced by p). The largest
+// eps belongs to the largest index; p's own cofactor is -orient3d(cell) < 0,
+// so the loop always ends. A virtual vertex (kNone) has no perturbation.
+bool Kernel::perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p, Index pid) {
+  int order[4] = {0, 1, 2, 3};
+  auto rank = [&](int k) { return id[k] == kNone ? -1 : static_cast<long long>(id[k]); };
+  std::sort(order, order + 4, [&](int x, int y) { return rank(x) > rank(y); });
+  for (int k : order) {
+    if (rank(k) < static_cast<long long>(pid)) break;
+    const Vec3* r[4] = {q[0], q[1], q[2], q[3]};
+    r[k] = &p;
+    const int o = orient3d(*r[0], *r[1], *r[2], *r[3]);
+    if (o != 0) return o < 0;
+  }
+  return true;  // p has the largest remaining perturbation: its weight wins
+}
+
+bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
+  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
+  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
+  bool filtered;
+  const int s = power_det_sign(q, wq, pts_[p], weight(p), filtered);
+  if (s != 0) {
+    ++(filtered ? stats_.power.filtered : stats_.power.exact);
+    return s < 0;
+  }
+  ++stats_.power.perturbed;
+  const Index id[4] = {a, b, c, d};
+  return perturbed_conflict(q, id, pts_[p], p);
+}
+
+bool Kernel::hull_conflict(Index a, Index b, Index c, Index p) {
+  const int o = orient3d(a, b, c, p);
+  if (o != 0) return o > 0;
+  // p is coplanar with the hull facet. Its orthocircle test equals the power
+  // test against any cell (a,b,c,d) with d off the plane, since d's lifted
+  // value is multiplied by orient3d(a,b,c,p) = 0. Take d = a moved along an
+  // axis by an exactly representable step, and give it no perturbation.
+  const Vec3& pa = pts_[a];
+  Vec3 d = pa;
+  int od = 0;
+  for (int axis = 0; axis < 3 && od == 0; ++axis) {
+    d = pa;
+    double& x = axis == 0 ? d.x : axis == 1 ? d.y : d.z;
+    x = x != 0 ? 2 * x : 1.0;
+    od = orient3d(pts_[a], pts_[b], pts_[c], d);
+  }
+  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &d};
+  Index id[4] = {a, b, c, kNone};  // d is virtual: never perturbed
+  if (od < 0) std::swap(q[0], q[1]), std::swap(id[0], id[1]);
+  const double wq[4] = {weight(id[0]), weight(id[1]), weight(c), weight(a)};
+  bool filtered;
+  const int s = power_det_sign(q, wq, pts_[p], weight(p), filtered);
+  if (s != 0) {
+    ++(filtered ? stats_.power.filtered : stats_.power.exact);
+    return s < 0;
+  }
+  ++stats_.power.perturbed;
+  return perturbed_conflict(q, id, pts_[p], p);
+}
+
+int Kernel::power_side_exact(Index a, Index b, Index c, Index d, Index p) {
+  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
+  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
+  return -exact::power_det(q, wq, pts_[p], weight(p));
+}
+
+}  // namespace alpha

@@ -1,0 +1,93 @@
+#include "alpha/spatial_sort.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace alpha {
+namespace {
+
+constexpr int kBits = 21;  // per axis: 3 * 21 = 63-bit keys
+
+// SplitMix64: tiny, portable and deterministic (std::shuffle is not).
+struct SplitMix64 {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+};
+
+// Skilling's transform ("Programming the Hilbert curve", 2004) from axes to
+// the transposed Hilbert index, then interleaved into one key.
+std::uint64_t hilbert_key(std::uint32_t x[3]) {
+  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (x[i] & q) {
+        x[0] ^= p;
+      } else {
+        const std::uint32_t t = (x[0] ^ x[i]) & p;
+        x[0] ^= t, x[i] ^= t;
+      }
+    }
+  }
+  x[1] ^= x[0], x[2] ^= x[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1)
+    if (x[2] & q) t ^= q - 1;
+  for (int i = 0; i < 3; ++i) x[i] ^= t;
+  std::uint64_t key = 0;
+  for (int b = kBits - 1; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
+  return key;
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices) {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (Index i : indices) {
+    const Vec3& p = points[i];
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  // One scale for all axes keeps the curve's cells cubic.
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const double scale = extent > 0 ? ((1u << kBits) - 1) / extent : 0;
+  auto cell = [&](double v, double l) {
+    return static_cast<std::uint32_t>(std::clamp((v - l) * scale, 0.0, double((1u << kBits) - 1)));
+  };
+  std::vector<std::uint64_t> keys;
+  keys.reserve(indices.size());
+  for (Index i : indices) {
+    const Vec3& p = points[i];
+    std::uint32_t x[3] = {cell(p.x, lo.x), cell(p.y, lo.y), cell(p.z, lo.z)};
+    keys.push_back(hilbert_key(x));
+  }
+  return keys;
+}
+
+std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> order,
+                              std::uint64_t seed) {
+  SplitMix64 rng{seed};
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.next() % i]);
+  // Rounds [n/8^(k+1), n/8^k): the first few points form the coarsest round.
+  std::vector<std::size_t> cuts{order.size()};
+  while (cuts.back() > 256) cuts.push_back(cuts.back() / 8);
+  cuts.push_back(0);
+  const std::vector<std::uint64_t> keys = hilbert_keys(points, order);
+  std::vector<std::pair<std::uint64_t, Index>> round;
+  for (std::size_t r = cuts.size() - 1; r > 0; --r) {
+    const std::size_t b = cuts[r], e = cuts[r - 1];
+    round.clear();
+    for (std::size_t i = b; i < e; ++i) round.emplace_back(keys[i], order[i]);
+    std::sort(round.begin(), round.end());
+    for (std::size_t i = b; i < e; ++i) order[i] = round[i - b].second;
+  }
+  return order;
+}
+
+}  // namespace alpha

@@ -1,0 +1,378 @@
+#include "alpha/triangulation.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <tuple>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "alpha/error.hpp"
+#include "alpha/spatial_sort.hpp"
+
+namespace alpha {
+namespace {
+
+// Far beyond any physical coordinate, yet squares and products of
+// differences stay well inside double range for the filters.
+constexpr double kMaxCoordinate = 1e15;
+constexpr double kMaxWeight = 1e30;
+
+void check_input(const std::vector<Vec3>& points, const std::vector<double>& weights) {
+  if (!weights.empty() && weights.size() != points.size())
+    fail("got " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
+         " points");
+  if (points.size() >= kInfinite) fail("too many points: " + std::to_string(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& p = points[i];
+    for (double v : {p.x, p.y, p.z})
+      if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
+        fail("point " + std::to_string(i) + ": coordinate " + std::to_string(v) +
+             (std::isfinite(v) ? " is out of range (|x| > 1e15)" : " is not a finite number"));
+    if (!weights.empty() && (!std::isfinite(weights[i]) || std::fabs(weights[i]) > kMaxWeight))
+      fail("point " + std::to_string(i) + ": weight " + std::to_string(weights[i]) +
+           " is not a finite number within 1e30");
+  }
+}
+
+}  // namespace
+
+// The incremental construction; lives only while the triangulation is built.
+class Triangulation::Builder {
+public:
+  explicit Builder(Triangulation& t)
+      : t_(t), kernel_(t.points_.data(), t.weights_.empty() ? nullptr : t.weights_.data()) {}
+
+  void run() {
+    const std::vector<Index> reps = merge_duplicates();
+    if (reps.size() < 4)
+      fail("need at least 4 distinct points, got " + std::to_string(reps.size()));
+    std::vector<Index> order = brio_order(t_.points_, reps);
+    const std::array<Index, 4> first = initial_simplex(order);
+    Index hint = 0;
+    for (Index p : order) {
+      if (p == first[0] || p == first[1] || p == first[2] || p == first[3]) continue;
+      hint = insert(p, hint);
+    }
+    finish();
+  }
+
+private:
+  struct Facet {  // a cavity boundary facet, copied before cells are reused
+    std::array<Index, 4> v;  // the new cell's vertices (p replaces the conflict vertex)
+    int i;                   // position of p
+    Index outside;           // the neighbour that stays
+    int mirror;              // its local index of the conflict cell
+  };
+  struct EdgeSlot {
+    std::uint64_t key;
+    Index cell;
+    int facet;
+    std::uint32_t stamp;
+  };
+
+  Triangulation& t_;
+  Kernel kernel_;
+  std::vector<Cell>& cells_ = t_.cells_;
+  std::vector<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
+  std::uint32_t stamp_ = 2;
+  std::vector<Index> free_cells_, conflict_, stack_;
+  std::vector<Facet> boundary_;
+  std::vector<EdgeSlot> edges_;
+  std::uint32_t edge_stamp_ = 0;
+  std::vector<std::uint32_t> vertex_mark_;
+  std::vector<Index> cavity_vertices_;
+  std::uint32_t walk_rng_ = 0x9e3779b9u;
+
+  std::vector<Index> merge_duplicates() {
+    const auto& pts = t_.points_;
+    const std::size_t n = pts.size();
+    std::vector<Index> idx(n);
+    std::iota(idx.begin(), idx.end(), 0);
+    auto lex = [&](Index a, Index b) {
+      const Vec3 &p = pts[a], &q = pts[b];
+      return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    };
+    std::sort(idx.begin(), idx.end(), [&](Index a, Index b) { return lex(a, b) || (!lex(b, a) && a < b); });
+    t_.status_.assign(n, PointStatus::vertex);
+    t_.representative_.resize(n);
+    std::vector<Index> reps;
+    for (std::size_t b = 0; b < n;) {
+      std::size_t e = b + 1;
+      while (e < n && pts[idx[e]] == pts[idx[b]]) ++e;
+      Index rep = idx[b];
+      for (std::size_t k = b + 1; k < e; ++k)
+        if (t_.weight(idx[k]) > t_.weight(rep)) rep = idx[k];
+      for (std::size_t k = b; k < e; ++k) {
+        t_.representative_[idx[k]] = rep;
+        if (idx[k] != rep) t_.status_[idx[k]] = PointStatus::duplicate;
+      }
+      t_.num_duplicates_ += e - b - 1;
+      reps.push_back(rep);
+      b = e;
+    }
+    std::sort(reps.begin(), reps.end());
+    return reps;
+  }
+
+  bool collinear(Index a, Index b, Index c) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 d = t_.points_[a];
+      double& x = axis == 0 ? d.x : axis == 1 ? d.y : d.z;
+      x = x != 0 ? 2 * x : 1.0;
+      if (kernel_.orient3d(t_.points_[a], t_.points_[b], t_.points_[c], d) != 0) return false;
+    }
+    return true;
+  }
+
+  std::array<Index, 4> initial_simplex(const std::vector<Index>& order) {
+    const Index a = order[0], b = order[1];
+    std::size_t k = 2;
+    while (k < order.size() && collinear(a, b, order[k])) ++k;
+    if (k == order.size()) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
+    const Index c = order[k];
+    std::size_t l = k + 1;
+    while (l < order.size() && (l == k || kernel_.orient3d(a, b, c, order[l]) == 0)) ++l;
+    if (l == order.size()) {
+      l = 2;  // the non-coplanar point may come before c
+      while (l < k && kernel_.orient3d(a, b, c, order[l]) == 0) ++l;
+      if (l == k) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
+    }
+    std::array<Index, 4> v{a, b, c, order[l]};
+    if (kernel_.orient3d(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
+    cells_.push_back({v, {1, 2, 3, 4}});
+    for (int i = 0; i < 4; ++i) {
+      // Replace vertex i by infinity and swap two others to keep the orientation.
+      Cell inf{v, {}};
+      inf.v[i] = kInfinite;
+      inf.n[i] = 0;
+      std::swap(inf.v[(i + 1) % 4], inf.v[(i + 2) % 4]);
+      cells_.push_back(inf);
+    }
+    // Link infinite cells with each other: they share the facet holding
+    // infinity and two vertices of the first cell.
+    for (Index c = 1; c < 5; ++c)
+      for (int k2 = 0; k2 < 4; ++k2) {
+        if (cells_[c].v[k2] == kInfinite) continue;
+        const Index missing = cells_[c].v[k2];  // the neighbour lacks this one
+        for (Index o = 1; o < 5; ++o)
+          if (o != c && index_of(o, missing) < 0) cells_[c].n[k2] = o;
+      }
+    return v;
+  }
+
+  int index_of(Index c, Index v) const {
+    const auto& cv = cells_[c].v;
+    for (int k = 0; k < 4; ++k)
+      if (cv[k] == v) return k;
+    return -1;
+  }
+
+  bool conflict(Index c, Index p) {
+    const auto& v = cells_[c].v;
+    for (int k = 0; k < 4; ++k)
+      if (v[k] == kInfinite) {
+        const auto& f = kFacet[k];
+        return kernel_.hull_conflict(v[f[0]], v[f[1]], v[f[2]], p);
+      }
+    return kernel_.power_conflict(v[0], v[1], v[2], v[3], p);
+  }
+
+  // Visibility walk from `start` to a cell whose closure holds p (for a point
+  // outside the hull: an infinite cell whose hull facet sees p).
+  Index locate(Index p, Index start) {
+    Index c = start, previous = kNone;
+    for (;;) {
+      const Cell& cell = cells_[c];
+      const int inf = index_of(c, kInfinite);
+      if (inf >= 0) {
+        const auto& f = kFacet[inf];
+        if (kernel_.orient3d(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], p) > 0) return c;
+        previous = c, c = cell.n[inf];
+        continue;
+      }
+      walk_rng_ ^= walk_rng_ << 13, walk_rng_ ^= walk_rng_ >> 17, walk_rng_ ^= walk_rng_ << 5;
+      const int r = static_cast<int>(walk_rng_ & 3u);
+      Index next = kNone;
+      for (int j = 0; j < 4 && next == kNone; ++j) {
+        const int i = (r + j) & 3;
+        if (cell.n[i] == previous) continue;
+        const auto& f = kFacet[i];
+        if (kernel_.orient3d(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], p) < 0) next = cell.n[i];
+      }
+      if (next == kNone) return c;
+      previous = c, c = next;
+    }
+  }
+
+  // Inserts p; returns a live cell near p to start the next walk.
+  Index insert(Index p, Index hint) {
+    if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
+    const Index start = locate(p, hint);
+    stamp_ += 2;
+    if (!conflict(start, p)) {
+      t_.status_[p] = PointStatus::hidden;
+      return start;
+    }
+    find_cavity(start, p);
+    if (t_.weighted()) mark_cavity_vertices();
+    const Index made = fill_cavity();
+    if (t_.weighted()) hide_enclosed_vertices();
+    return made;
+  }
+
+  void find_cavity(Index start, Index p) {
+    conflict_.clear(), boundary_.clear(), stack_.clear();
+    cell_mark_[start] = stamp_;
+    stack_.push_back(start);
+    while (!stack_.empty()) {
+      const Index c = stack_.back();
+      stack_.pop_back();
+      conflict_.push_back(c);
+      for (int i = 0; i < 4; ++i) {
+        const Index n = cells_[c].n[i];
+        if (cell_mark_[n] == stamp_) continue;
+        if (cell_mark_[n] != stamp_ + 1 && conflict(n, p)) {
+          cell_mark_[n] = stamp_;
+          stack_.push_back(n);
+          continue;
+        }
+        cell_mark_[n] = stamp_ + 1;
+        Facet f{cells_[c].v, i, n, index_of_neighbor(n, c)};
+        f.v[i] = p;
+        boundary_.push_back(f);
+      }
+    }
+  }
+
+  int index_of_neighbor(Index c, Index n) const {
+    const auto& cn = cells_[c].n;
+    for (int k = 0; k < 4; ++k)
+      if (cn[k] == n) return k;
+    return -1;
+  }
+
+  // Replaces the conflict cells by p joined to each boundary facet.
+  Index fill_cavity() {
+    for (Index c : conflict_) free_cells_.push_back(c);
+    const std::size_t slots = std::bit_ceil(4 * boundary_.size() + 16);
+    if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0, 0}), edge_stamp_ = 0;
+    ++edge_stamp_;
+    const std::size_t mask = edges_.size() - 1;
+    Index made = kNone;
+    for (const Facet& f : boundary_) {
+      Index c;
+      if (!free_cells_.empty()) {
+        c = free_cells_.back();
+        free_cells_.pop_back();
+      } else {
+        c = static_cast<Index>(cells_.size());
+        cells_.push_back({});
+        if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
+      }
+      cell_mark_[c] = 0;
+      cells_[c].v = f.v;
+      cells_[c].n[f.i] = f.outside;
+      cells_[f.outside].n[f.mirror] = c;
+      // The other three facets contain p and one edge of the boundary facet;
+      // the cell sharing that edge is the neighbour.
+      for (int j = 0; j < 4; ++j) {
+        if (j == f.i) continue;
+        Index a = kNone, b = kNone;
+        for (int k = 0; k < 4; ++k)
+          if (k != j && k != f.i) (a == kNone ? a : b) = f.v[k];
+        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+        std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 20 & mask;
+        while (edges_[h].stamp == edge_stamp_ && edges_[h].key != key) h = (h + 1) & mask;
+        EdgeSlot& slot = edges_[h];
+        if (slot.stamp == edge_stamp_) {
+          cells_[c].n[j] = slot.cell;
+          cells_[slot.cell].n[slot.facet] = c;
+          slot.key = ~0ull;  // each edge is shared by exactly two new cells
+        } else {
+          slot = {key, c, j, edge_stamp_};
+        }
+      }
+      made = c;
+    }
+    return made;
+  }
+
+  // Weighted points only: a vertex of the conflict cells that no boundary
+  // facet keeps lies inside the cavity, and the new point hides it.
+  void mark_cavity_vertices() {
+    if (vertex_mark_.size() < t_.points_.size()) vertex_mark_.assign(t_.points_.size(), 0);
+    cavity_vertices_.clear();
+    for (Index c : conflict_)
+      for (Index v : cells_[c].v)
+        if (v != kInfinite && vertex_mark_[v] != stamp_) vertex_mark_[v] = stamp_, cavity_vertices_.push_back(v);
+  }
+  void hide_enclosed_vertices() {
+    for (const Facet& f : boundary_)
+      for (Index v : f.v)
+        if (v != kInfinite) vertex_mark_[v] = stamp_ + 1;
+    for (Index v : cavity_vertices_)
+      if (vertex_mark_[v] == stamp_) t_.status_[v] = PointStatus::hidden;
+  }
+
+  // Drops unused cell slots and fills in counts and vertex-to-cell links.
+  void finish() {
+    std::vector<Index> remap(cells_.size(), 0);
+    for (Index c : free_cells_) remap[c] = kNone;
+    Index next = 0;
+    for (Index c = 0; c < cells_.size(); ++c)
+      if (remap[c] != kNone) remap[c] = next++;
+    for (Index c = 0; c < cells_.size(); ++c) {
+      if (remap[c] == kNone) continue;
+      Cell cell = cells_[c];
+      for (Index& n : cell.n) n = remap[n];
+      cells_[remap[c]] = cell;
+    }
+    cells_.resize(next);
+    cells_.shrink_to_fit();
+    t_.vertex_cell_.assign(t_.points_.size(), kNone);
+    for (Index c = 0; c < cells_.size(); ++c) {
+      bool finite = true;
+      for (Index v : cells_[c].v) {
+        if (v == kInfinite) finite = false;
+        else t_.vertex_cell_[v] = c;
+      }
+      t_.num_finite_cells_ += finite;
+    }
+    for (PointStatus s : t_.status_) {
+      t_.num_hidden_ += s == PointStatus::hidden;
+      t_.num_vertices_ += s == PointStatus::vertex;
+    }
+    t_.stats_ = kernel_.stats();
+  }
+};
+
+Triangulation::Triangulation(std::vector<Vec3> points, std::vector<double> weights)
+    : points_(std::move(points)), weights_(std::move(weights)) {
+  check_input(points_, weights_);
+  Builder(*this).run();
+}
+
+int Triangulation::infinite_position(Index c) const { return index_of(c, kInfinite); }
+
+int Triangulation::index_of(Index c, Index v) const {
+  const auto& cv = cell(c).v;
+  for (int k = 0; k < 4; ++k)
+    if (cv[k] == v) return k;
+  return -1;
+}
+
+int Triangulation::index_of_neighbor(Index c, Index n) const {
+  const auto& cn = cell(c).n;
+  for (int k = 0; k < 4; ++k)
+    if (cn[k] == n) return k;
+  return -1;
+}
+
+std::size_t Triangulation::memory_bytes() const {
+  return points_.capacity() * sizeof(Vec3) + weights_.capacity() * sizeof(double) +
+         status_.capacity() * sizeof(PointStatus) + representative_.capacity() * sizeof(Index) +
+         cells_.capacity() * sizeof(Cell) + vertex_cell_.capacity() * sizeof(Index);
+}
+
+}  // namespace alpha

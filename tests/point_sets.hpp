@@ -1,0 +1,18 @@
+// Point sets for the tests: random, degenerate and weighted, all seeded.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "alpha/geometry.hpp"
+
+namespace testing {
+
+std::vector<alpha::Vec3> random_points(std::size_t n, std::uint64_t seed, double scale = 1.0);
+// n x n x n integer grid: every cube's 8 corners are cospherical.
+std::vector<alpha::Vec3> grid_points(int n, double spacing = 1.0);
+// Points exactly on a sphere: integer solutions of x^2+y^2+z^2 = r2.
+std::vector<alpha::Vec3> sphere_points(int r2);
+// Random weights in [lo, hi).
+std::vector<double> random_weights(std::size_t n, std::uint64_t seed, double lo, double hi);
+
+}  // namespace testing
