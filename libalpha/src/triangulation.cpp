@@ -47,6 +47,11 @@ public:
     const std::vector<Index> reps = merge_duplicates();
     if (reps.size() < 4)
       fail("need at least 4 distinct points, got " + std::to_string(reps.size()));
+    // A Delaunay triangulation of n random points has about 6.7 n cells;
+    // reserving avoids repeated copies and page faults while growing.
+    const std::size_t expected = reps.size() * 27 / 4 + 64;
+    cells_.reserve(expected);
+    cell_mark_.assign(expected, 0);
     std::vector<Index> order = brio_order(t_.points_, reps);
     const std::array<Index, 4> first = initial_simplex(order);
     Index hint = 0;
@@ -329,7 +334,6 @@ private:
       cells_[remap[c]] = cell;
     }
     cells_.resize(next);
-    cells_.shrink_to_fit();
     t_.vertex_cell_.assign(t_.points_.size(), kNone);
     for (Index c = 0; c < cells_.size(); ++c) {
       bool finite = true;

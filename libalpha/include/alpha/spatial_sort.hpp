@@ -15,7 +15,7 @@ namespace alpha {
 std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> indices,
                               std::uint64_t seed = 0x5eed);
 
-// 63-bit Hilbert-curve key of each index within the bounding box of the points.
+// 48-bit Hilbert-curve key of each index within the bounding box of the points.
 std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices);
 
 }  // namespace alpha
