@@ -7,6 +7,7 @@
 #include <set>
 
 #include "alpha/error.hpp"
+#include "alpha/simplices.hpp"
 #include "alpha/triangulation.hpp"
 #include "alpha/validation.hpp"
 #include "point_sets.hpp"
@@ -171,4 +172,37 @@ TEST_CASE("Unusable input gives a clear error", "[triangulation][errors]") {
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1e300}}), Catch::Contains("out of range"));
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {1.0}),
                     Catch::Contains("weights"));
+}
+
+TEST_CASE("Edges and triangles: counts, incidences and Euler characteristic", "[simplices]") {
+  for (int kind = 0; kind < 3; ++kind) {
+    const Triangulation t = kind == 0   ? Triangulation(testing::random_points(300, 5))
+                            : kind == 1 ? Triangulation(testing::grid_points(5))
+                                        : Triangulation(testing::random_points(300, 6, 10.0),
+                                                        testing::random_weights(300, 7, 0.0, 4.0));
+    const Simplices s(t);
+    // Finite complex of a convex ball: V - E + F - C = 1; hull surface: V_h - E_h + F_h = 2.
+    const long v = long(t.num_vertices()), e = long(s.num_edges()), f = long(s.num_triangles()),
+               c = long(t.num_finite_cells());
+    CHECK(v - e + f - c == 1);
+    // Each finite cell has 4 triangles; each interior triangle 2 finite cells.
+    CHECK(4 * c == 2 * (f - long(s.num_hull_triangles())) + long(s.num_hull_triangles()));
+    for (Index x = 0; x < s.num_triangles(); ++x) {
+      const auto& tri = s.triangle(x);
+      for (int k = 0; k < 3; ++k) {
+        const auto& edge = s.edge(s.triangle_edges(x)[k]);
+        // Edge k is opposite vertex k.
+        CHECK(std::find(edge.begin(), edge.end(), tri[k]) == edge.end());
+        CHECK(s.find_edge(edge[0], edge[1]) == s.triangle_edges(x)[k]);
+      }
+      for (Index cell : s.triangle_cells(x)) {
+        int hits = 0;
+        for (int i = 0; i < 4; ++i) hits += s.cell_triangle(cell, i) == x;
+        CHECK(hits == 1);
+      }
+    }
+    std::size_t incidences = 0;
+    for (Index x = 0; x < s.num_edges(); ++x) incidences += s.edge_triangles(x).size();
+    CHECK(incidences == 3 * s.num_triangles());
+  }
 }

@@ -357,22 +357,6 @@ Triangulation::Triangulation(std::vector<Vec3> points, std::vector<double> weigh
   Builder(*this).run();
 }
 
-int Triangulation::infinite_position(Index c) const { return index_of(c, kInfinite); }
-
-int Triangulation::index_of(Index c, Index v) const {
-  const auto& cv = cell(c).v;
-  for (int k = 0; k < 4; ++k)
-    if (cv[k] == v) return k;
-  return -1;
-}
-
-int Triangulation::index_of_neighbor(Index c, Index n) const {
-  const auto& cn = cell(c).n;
-  for (int k = 0; k < 4; ++k)
-    if (cn[k] == n) return k;
-  return -1;
-}
-
 std::size_t Triangulation::memory_bytes() const {
   return points_.capacity() * sizeof(Vec3) + weights_.capacity() * sizeof(double) +
          status_.capacity() * sizeof(PointStatus) + representative_.capacity() * sizeof(Index) +

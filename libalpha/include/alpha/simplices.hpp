@@ -45,7 +45,6 @@ private:
   std::vector<Index> cell_triangles_;
   std::vector<std::size_t> vertex_edge_start_, edge_triangle_start_;  // CSR offsets
   std::vector<Index> vertex_edges_, edge_triangles_;
-  std::vector<std::size_t> lower_edge_start_;  // edges by their smaller vertex
   std::size_t num_hull_triangles_ = 0;
 
   static std::span<const Index> range(const std::vector<std::size_t>& start, const std::vector<Index>& items, Index i) {

@@ -71,9 +71,12 @@ public:
   std::span<const Cell> cells() const { return cells_; }
   bool is_infinite(Index c) const { return infinite_position(c) >= 0; }
   // Position of kInfinite in cell c, or -1 for a finite cell.
-  int infinite_position(Index c) const;
-  // Local index of vertex v in cell c (v must be in c).
-  int index_of(Index c, Index v) const;
+  int infinite_position(Index c) const { return index_of(c, kInfinite); }
+  // Local index of vertex v in cell c, or -1.
+  int index_of(Index c, Index v) const {
+    const auto& cv = cell(c).v;
+    return cv[0] == v ? 0 : cv[1] == v ? 1 : cv[2] == v ? 2 : cv[3] == v ? 3 : -1;
+  }
   // The local index of c in cell(c).n[k], i.e. the facet seen from the other side.
   int mirror_index(Index c, int k) const { return index_of_neighbor(cells_[c].n[k], c); }
   // One cell incident to vertex v (v a vertex), kNone otherwise.
@@ -97,7 +100,10 @@ private:
   std::size_t num_vertices_ = 0, num_duplicates_ = 0, num_hidden_ = 0, num_finite_cells_ = 0;
   PredicateStats stats_;
 
-  int index_of_neighbor(Index c, Index n) const;
+  int index_of_neighbor(Index c, Index n) const {
+    const auto& cn = cell(c).n;
+    return cn[0] == n ? 0 : cn[1] == n ? 1 : cn[2] == n ? 2 : cn[3] == n ? 3 : -1;
+  }
 };
 
 }  // namespace alpha
