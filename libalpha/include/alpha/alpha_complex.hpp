@@ -1,0 +1,100 @@
+// The family of alpha complexes of a (weighted) point set (Edelsbrunner &
+// Muecke 1994; weighted: Edelsbrunner 1992), computed once for all alpha.
+//
+// Every finite simplex of the regular triangulation gets an interval record:
+// the rank at which it enters the complex, and the ranks mu_low / mu_high at
+// which it stops being singular / becomes interior. Ranks index the alpha
+// spectrum: the sorted distinct critical values (squared radii of smallest
+// orthogonal spheres, compared exactly), so every later query is integer
+// work. A simplex whose value equals alpha is present (CGAL's convention).
+//
+// Values are squared radii ("alpha_sq"); with weights they can be negative.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "alpha/persistence.hpp"
+#include "alpha/simplices.hpp"
+#include "alpha/sizes.hpp"
+#include "alpha/triangulation.hpp"
+
+namespace alpha {
+
+enum class Classification : std::uint8_t { exterior, singular, regular, interior };
+const char* to_string(Classification c);
+
+// Interval record of one simplex, in spectrum ranks. kNever: never happens
+// (mu_high of a hull simplex; everything of an infinite cell).
+struct Interval {
+  Index entry = kNever;
+  Index mu_low = kNever;
+  Index mu_high = kNever;
+  bool attached = false;
+};
+
+// Classification counts at one alpha: [dimension][Classification].
+using ClassCounts = std::array<std::array<std::size_t, 4>, 4>;
+
+// The alpha shape boundary at one alpha: regular triangles oriented outward
+// (their normal (b-a)x(c-a) points out of the shape), and the singular
+// simplices kept apart.
+struct ShapeBoundary {
+  std::vector<std::array<Index, 3>> triangles;          // regular, outward
+  std::vector<std::array<Index, 3>> singular_triangles;
+  std::vector<std::array<Index, 2>> singular_edges;
+  std::vector<Index> singular_vertices;
+};
+
+class AlphaComplex {
+public:
+  explicit AlphaComplex(const Triangulation& t);
+
+  const Triangulation& triangulation() const { return *t_; }
+  const Simplices& simplices() const { return simplices_; }
+
+  // The alpha spectrum: critical values in increasing order.
+  std::size_t spectrum_size() const { return spectrum_.size(); }
+  double spectrum_value(Index rank) const;  // nearest double to the exact value
+  // Number of critical values <= alpha_sq (exact): simplices whose entry
+  // rank is below this level are present at alpha_sq.
+  Index level(double alpha_sq) const;
+
+  const Interval& vertex_interval(Index v) const { return vertex_[v]; }
+  const Interval& edge_interval(Index e) const { return edge_[e]; }
+  const Interval& triangle_interval(Index f) const { return triangle_[f]; }
+  Index cell_entry(Index c) const { return cell_[c]; }
+
+  static Classification classify(const Interval& i, Index level);
+  Classification classify_cell(Index c, Index level) const {
+    return cell_[c] < level ? Classification::interior : Classification::exterior;
+  }
+  ClassCounts counts(Index level) const;
+
+  // Filtration by entry rank, and its persistence pairs (ranks).
+  FiltrationRanks filtration() const;
+  const std::vector<PersistencePair>& persistence() const { return pairs_; }
+  std::array<std::size_t, 3> betti(Index level) const;
+  // Smallest level at which every vertex is present in one component.
+  Index optimal_level() const;
+
+  double volume(Index level) const;  // of the interior cells
+  double area(Index level) const;    // of the regular and singular triangles
+  ShapeBoundary boundary(Index level) const;
+
+  const SizeStats& size_stats() const { return size_stats_; }
+  std::size_t memory_bytes() const;
+
+private:
+  const Triangulation* t_;
+  Simplices simplices_;
+  std::vector<Interval> vertex_, edge_, triangle_;
+  std::vector<Index> cell_;       // entry rank of each cell
+  std::vector<Simplex> spectrum_;  // a simplex realizing each critical value
+  std::vector<PersistencePair> pairs_;
+  SizeStats size_stats_;
+
+  SizeKernel size_kernel() const;
+};
+
+}  // namespace alpha

@@ -1,0 +1,502 @@
+#include "alpha/sizes.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+
+#include "alpha/error.hpp"
+
+namespace alpha {
+namespace {
+
+// ---------------------------------------------------------------------------
+// The formulas, written once for every number type (filter, 128-bit, GMP).
+//
+// Relative to p0 (the vertex with the smallest index), with u_i = p_i - p0,
+// dw_i = w_i - w0 and h_i = |u_i|^2 - dw_i, the center c = p0 + x solves
+// 2 u_i.x = h_i with x in the span of the u_i, and r^2 = |x|^2 - w0:
+//   edge      x = h0 u0 / (2L)        L = |u0|^2
+//   triangle  x = (V x n) / (2A)      n = u0 x u1, A = |n|^2, V = h0 u1 - h1 u0
+//   tetra     x = m / (2 det)         m = h0 u1xu2 + h1 u2xu0 + h2 u0xu1
+// (check: u_i.(V x n) = h_i A, u_i.m = h_i det). As V lies in the plane,
+// |V x n| = |V| |n|, so every size is r^2 = N / D with D > 0:
+//   vertex    N = -w0                 D = 1
+//   edge      N = h0^2 - 4 w0 L       D = 4 L
+//   triangle  N = |V|^2 - 4 w0 A      D = 4 A
+//   tetra     N = |m|^2 - 4 w0 det^2  D = 4 det^2
+// Sums of squares keep N and D well conditioned; 4 is an exact scaling.
+
+template <class T> struct Local {
+  int k = 0;    // number of vertices - 1
+  T u[3][3];    // u_i
+  T dw[3];      // dw_i
+  T w0;
+};
+
+template <class T> T dot(const T* a, const T* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+template <class T> void cross(const T* a, const T* b, T* r) {
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+template <class T> T lifted(const Local<T>& s, int i) { return dot(s.u[i], s.u[i]) - s.dw[i]; }
+
+template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
+  const auto& u = s.u;
+  if (s.k == 0) {
+    N = T(0) - s.w0;
+    D = T(1);
+  } else if (s.k == 1) {
+    const T L = dot(u[0], u[0]);
+    const T h = L - s.dw[0];
+    N = h * h - s.w0 * L * 4;
+    D = L * 4;
+  } else if (s.k == 2) {
+    T n[3], V[3];
+    cross(u[0], u[1], n);
+    const T A = dot(n, n);
+    const T h0 = lifted(s, 0), h1 = lifted(s, 1);
+    for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
+    N = dot(V, V) - s.w0 * A * 4;
+    D = A * 4;
+  } else {
+    T c[3][3], m[3];
+    cross(u[1], u[2], c[0]);
+    cross(u[2], u[0], c[1]);
+    cross(u[0], u[1], c[2]);
+    const T det = dot(u[0], c[0]);
+    const T h0 = lifted(s, 0), h1 = lifted(s, 1), h2 = lifted(s, 2);
+    for (int a = 0; a < 3; ++a) m[a] = h0 * c[0][a] + h1 * c[1][a] + h2 * c[2][a];
+    const T det2 = det * det;
+    N = dot(m, m) - s.w0 * det2 * 4;
+    D = det2 * 4;
+  }
+}
+
+// Power distance of q to the smallest sphere of s (a vertex, edge or
+// triangle), times the positive denominator `den` (1, L or A): with
+// v = q - p0 and dq = w0 - w_q, pi = |v|^2 + dq - 2 v.x.
+template <class T> T power_terms(const Local<T>& s, const T* v, const T& dq, T& den) {
+  const T g = dot(v, v) + dq;
+  if (s.k == 0) {
+    den = T(1);
+    return g;
+  }
+  const auto& u = s.u;
+  if (s.k == 1) {
+    den = dot(u[0], u[0]);
+    const T h = den - s.dw[0];
+    return den * g - h * dot(u[0], v);
+  }
+  T n[3], V[3], Vn[3];
+  cross(u[0], u[1], n);
+  den = dot(n, n);
+  const T h0 = lifted(s, 0), h1 = lifted(s, 1);
+  for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
+  cross(V, n, Vn);
+  return den * g - dot(v, Vn);
+}
+
+// ---------------------------------------------------------------------------
+// Filter: each value carries its permanent p (the same expression with
+// absolute values and every '-' read as '+').
+//
+// Error analysis (Higham ch. 3; u = 2^-53, gamma_d = d u / (1 - d u)): give
+// each leaf a level d (1 for a rounded difference p_i - p0 or w_i - w0, 0
+// for an input w0), an op A+-B the level max(dA, dB) + 1 and A*B the level
+// dA + dB + 1. By induction |fl(E) - E| <= gamma_d(E) perm(E). The levels of
+// the code above (written left to right exactly as counted):
+//   edge      L 5, h 6, N 14, D 5
+//   triangle  n 4, A 11, h 6, V 9, N 22, D 11
+//   tetra     c 4, det 8, D 17, h 6, m 13, N 30
+//   power     vertex 6; edge 13; triangle (V x n 15, v.(V x n) 19) 20
+// We use (d + 1) u times the computed permanent: the extra u covers gamma_d
+// vs d u, the permanent being evaluated in doubles from rounded leaves
+// (factor at most (1+u)^40), and underflow (below).
+//
+// Range: nonzero lengths (coordinate differences) must lie in
+// [2^-80, 2^100] and nonzero squared lengths (weights) in [2^-160, 2^200].
+// Then permanents stay below 2^820 (no overflow), and every nonzero
+// permanent of a product of degree <= 8 exceeds 2^-640, so an underflowing
+// product errs by less than 2^-1075 < 2^-435 of its permanent: negligible
+// next to u. Outside the range the filter gives up (error = +inf).
+constexpr double kU = 0x1p-53;
+constexpr double kMinLength = 0x1p-80, kMaxLength = 0x1p100;
+constexpr double kMinArea = 0x1p-160, kMaxArea = 0x1p200;
+constexpr double kSizeN[4] = {0, 15 * kU, 23 * kU, 31 * kU};
+constexpr double kSizeD[4] = {0, 6 * kU, 12 * kU, 18 * kU};
+constexpr double kPower[3] = {7 * kU, 14 * kU, 21 * kU};
+// The few roundings in the bound computations themselves: a relative 16 u
+// and, for results in the subnormal range, an absolute 2^-1070.
+constexpr double kSlack = 1 + 0x1p-49;
+constexpr double kTiny = 0x1p-1070;
+
+struct Approx {
+  double v = 0, p = 0;
+  Approx() = default;
+  Approx(int i) : v(i), p(std::abs(i)) {}
+  Approx(double value, double perm) : v(value), p(perm) {}
+};
+Approx operator+(const Approx& a, const Approx& b) { return {a.v + b.v, a.p + b.p}; }
+Approx operator-(const Approx& a, const Approx& b) { return {a.v - b.v, a.p + b.p}; }
+Approx operator*(const Approx& a, const Approx& b) { return {a.v * b.v, a.p * b.p}; }
+
+bool in_range(double x, double lo, double hi) {
+  const double a = std::fabs(x);
+  return a == 0 || (a >= lo && a <= hi);  // false for NaN and inf
+}
+Approx length_leaf(double x, bool& ok) {
+  ok &= in_range(x, kMinLength, kMaxLength);
+  return {x, std::fabs(x)};
+}
+Approx area_leaf(double x, bool& ok) {
+  ok &= in_range(x, kMinArea, kMaxArea);
+  return {x, std::fabs(x)};
+}
+
+// ---------------------------------------------------------------------------
+// Exact evaluation. Doubles are dyadic m 2^e; one common unit 2^unit for
+// coordinates and 2^(2 unit) for weights makes all values of a call integers
+// (same idea as exact.cpp). 128-bit integers that detect overflow first,
+// GMP when any step overflowed.
+
+__extension__ typedef __int128 i128;
+
+struct Wide {
+  i128 v = 0;
+  bool ok = true;  // false once any step overflowed
+  Wide() = default;
+  Wide(int i) : v(i) {}
+  Wide(i128 value, bool good) : v(value), ok(good) {}
+};
+Wide operator+(const Wide& a, const Wide& b) {
+  i128 r;
+  const bool o = __builtin_add_overflow(a.v, b.v, &r);
+  return {r, a.ok && b.ok && !o};
+}
+Wide operator-(const Wide& a, const Wide& b) {
+  i128 r;
+  const bool o = __builtin_sub_overflow(a.v, b.v, &r);
+  return {r, a.ok && b.ok && !o};
+}
+Wide operator*(const Wide& a, const Wide& b) {
+  i128 r;
+  const bool o = __builtin_mul_overflow(a.v, b.v, &r);
+  return {r, a.ok && b.ok && !o};
+}
+
+bool certainly_zero(const Wide& x) { return x.ok && x.v == 0; }
+bool certainly_zero(const mpz_class& x) { return x == 0; }
+
+struct Dyadic {
+  std::int64_t m = 0;  // odd, or 0 for the value 0
+  int e = INT_MAX;
+};
+
+Dyadic split(double v) {
+  if (!std::isfinite(v)) fail("sizes: non-finite coordinate, weight or alpha");
+  if (v == 0) return {};
+  int e;
+  const auto m = static_cast<std::int64_t>(std::ldexp(std::frexp(v, &e), 53));
+  const int tz = std::countr_zero(static_cast<std::uint64_t>(m));
+  return {m >> tz, e - 53 + tz};
+}
+
+template <class T> T to_int(const Dyadic& d, int shift);
+template <> Wide to_int<Wide>(const Dyadic& d, int shift) {
+  if (d.m == 0) return Wide(0);
+  const int bits = shift + static_cast<int>(std::bit_width(static_cast<std::uint64_t>(std::llabs(d.m))));
+  if (bits > 120) return {0, false};
+  return {i128(d.m) << shift, true};
+}
+template <> mpz_class to_int<mpz_class>(const Dyadic& d, int shift) {
+  mpz_class r(static_cast<long>(d.m));
+  if (d.m != 0) r <<= static_cast<mp_bitcnt_t>(shift);
+  return r;
+}
+
+// The points (and alpha) of one exact evaluation, in one common unit.
+struct Scaled {
+  Dyadic c[9][3], w[9];
+  Dyadic alpha;  // a squared length to compare with, if any
+  int n = 0;
+  int unit = 0;  // coordinates in units of 2^unit, squared lengths of 2^(2 unit)
+
+  void add(const Vec3& p, double weight) {
+    c[n][0] = split(p.x), c[n][1] = split(p.y), c[n][2] = split(p.z);
+    w[n++] = split(weight);
+  }
+  void finish() {
+    int ec = INT_MAX, ew = alpha.e;
+    for (int i = 0; i < n; ++i) {
+      for (const Dyadic& d : c[i]) ec = std::min(ec, d.e);
+      ew = std::min(ew, w[i].e);
+    }
+    unit = std::min(ec, ew == INT_MAX ? INT_MAX : ew >> 1);  // >> floors
+    if (unit == INT_MAX) unit = 0;                            // all zero
+  }
+  template <class T> T coord(int i, int a) const { return to_int<T>(c[i][a], c[i][a].e - unit); }
+  template <class T> T weight(int i) const { return to_int<T>(w[i], w[i].e - 2 * unit); }
+  template <class T> T alpha_value() const { return to_int<T>(alpha, alpha.e - 2 * unit); }
+
+  // The simplex of k + 1 points stored from slot `first` on.
+  template <class T> Local<T> local(int first, int k) const {
+    Local<T> s;
+    s.k = k;
+    s.w0 = weight<T>(first);
+    for (int i = 0; i < k; ++i) {
+      for (int a = 0; a < 3; ++a) s.u[i][a] = coord<T>(first + 1 + i, a) - coord<T>(first, a);
+      s.dw[i] = weight<T>(first + 1 + i) - s.w0;
+    }
+    return s;
+  }
+  template <class T> void size(int first, int k, T& N, T& D) const {
+    size_terms(local<T>(first, k), N, D);
+    if (certainly_zero(D)) fail("sizes: degenerate simplex (affinely dependent points)");
+  }
+};
+
+// Sign of f(T) evaluated in 128-bit integers, or in GMP if that overflowed.
+template <class F> int exact_sign(F f) {
+  const Wide w = f(Wide{});
+  if (w.ok) return (w.v > 0) - (w.v < 0);
+  return sgn(f(mpz_class{}));
+}
+
+// The double nearest to q, ties to even (mpq's get_d truncates).
+double nearest_double(const mpq_class& q) {
+  const double t = q.get_d();
+  if (!std::isfinite(t) || mpq_class(t) == q) return t;
+  const double away = std::nextafter(t, q > 0 ? HUGE_VAL : -HUGE_VAL);
+  const mpq_class tq(t);
+  mpq_class mid;
+  if (std::isfinite(away))
+    mid = (tq + mpq_class(away)) / 2;
+  else
+    mid = tq + (tq - mpq_class(std::nextafter(t, 0.0))) / 2;
+  const int c = cmp(abs(q), abs(mid));
+  if (c != 0) return c < 0 ? t : away;
+  return (std::bit_cast<std::uint64_t>(t) & 1) == 0 ? t : away;
+}
+
+int sign(double x) { return (x > 0) - (x < 0); }
+
+}  // namespace
+
+Simplex::Simplex(std::span<const Index> vs) : n(static_cast<int>(vs.size())) {
+  if (n < 1 || n > 4) fail("Simplex: needs 1 to 4 vertices");
+  std::copy(vs.begin(), vs.end(), v.begin());
+}
+
+int compare_filtered(const Size& a, const Size& b) {
+  if (a.error == 0 && b.error == 0) return sign(a.value - b.value);  // exact: fl(a-b) has the sign of a-b
+  // With gap = fl(a-b) and tol = fl(fl(ea+eb) (1+2^-50)), gap > tol implies
+  // a - b > ea + eb: the slack outweighs the three roundings.
+  const double gap = a.value - b.value;
+  const double tol = (a.error + b.error) * (1 + 0x1p-50);
+  if (gap > tol) return 1;
+  if (gap < -tol) return -1;
+  return kUndecided;  // also for NaN or infinite bounds
+}
+
+int compare_filtered(const Size& a, double alpha_sq) { return compare_filtered(a, Size{alpha_sq, 0}); }
+
+namespace {
+
+// The simplex with sorted indices: p0 is the smallest index, so that a
+// simplex gives the same doubles whatever the order of its vertices.
+Simplex sorted(const Simplex& s) {
+  if (s.n < 1 || s.n > 4) fail("sizes: a simplex has 1 to 4 vertices");
+  Simplex r = s;
+  std::sort(r.v.begin(), r.v.begin() + r.n);
+  return r;
+}
+
+}  // namespace
+
+Size SizeKernel::size(const Simplex& simplex) const {
+  const Simplex s = sorted(simplex);
+  const double w0 = w_ ? w_[s.v[0]] : 0.0;
+  if (s.n == 1) return {-w0, 0};
+  bool ok = true;
+  Local<Approx> l;
+  l.k = s.n - 1;
+  l.w0 = area_leaf(w0, ok);
+  const Vec3& p0 = pts_[s.v[0]];
+  for (int i = 0; i < l.k; ++i) {
+    const Vec3& p = pts_[s.v[i + 1]];
+    l.u[i][0] = length_leaf(p.x - p0.x, ok);
+    l.u[i][1] = length_leaf(p.y - p0.y, ok);
+    l.u[i][2] = length_leaf(p.z - p0.z, ok);
+    l.dw[i] = area_leaf(w_ ? w_[s.v[i + 1]] - w0 : 0.0, ok);
+  }
+  Approx N, D;
+  size_terms(l, N, D);
+  double value = N.v / D.v;
+  if (std::isnan(value)) value = HUGE_VAL;  // D = 0: keep values sortable
+  const double eN = kSizeN[l.k] * N.p, eD = kSizeD[l.k] * D.p;
+  if (!ok || !(D.v > eD)) return {value, HUGE_VAL};
+  // N/D - N'/D' = (N - N')/D' + N (1/D - 1/D') for the exact N', D' with
+  // D' >= D - eD > 0; then the rounding of the quotient itself.
+  const double bound = (eN + std::fabs(N.v) * (eD / D.v)) / (D.v - eD) + kU * std::fabs(value);
+  return {value, bound * kSlack + kTiny};
+}
+
+Vec3 SizeKernel::center(const Simplex& simplex) const {
+  const Simplex s = sorted(simplex);
+  const Vec3& p0 = pts_[s.v[0]];
+  const int k = s.n - 1;
+  if (k == 0) return p0;
+  const double w0 = w_ ? w_[s.v[0]] : 0.0;
+  double u[3][3], h[3];
+  for (int i = 0; i < k; ++i) {
+    const Vec3& p = pts_[s.v[i + 1]];
+    u[i][0] = p.x - p0.x, u[i][1] = p.y - p0.y, u[i][2] = p.z - p0.z;
+    h[i] = dot(u[i], u[i]) - (w_ ? w_[s.v[i + 1]] - w0 : 0.0);
+  }
+  double x[3], den;  // x / den, see the formulas at the top
+  if (k == 1) {
+    for (int a = 0; a < 3; ++a) x[a] = h[0] * u[0][a];
+    den = 2 * dot(u[0], u[0]);
+  } else if (k == 2) {
+    double n[3], V[3];
+    cross(u[0], u[1], n);
+    for (int a = 0; a < 3; ++a) V[a] = h[0] * u[1][a] - h[1] * u[0][a];
+    cross(V, n, x);
+    den = 2 * dot(n, n);
+  } else {
+    double c[3][3];
+    cross(u[1], u[2], c[0]);
+    cross(u[2], u[0], c[1]);
+    cross(u[0], u[1], c[2]);
+    for (int a = 0; a < 3; ++a) x[a] = h[0] * c[0][a] + h[1] * c[1][a] + h[2] * c[2][a];
+    den = 2 * dot(u[0], c[0]);
+  }
+  return {p0.x + x[0] / den, p0.y + x[1] / den, p0.z + x[2] / den};
+}
+
+mpq_class SizeKernel::exact_size(const Simplex& simplex) const {
+  const Simplex s = sorted(simplex);
+  Scaled in;
+  for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
+  in.finish();
+  mpz_class N, D;
+  in.size(0, s.n - 1, N, D);
+  mpq_class q(N, D);
+  q.canonicalize();
+  // Sizes are squared lengths: scale by 2^(2 unit).
+  if (in.unit >= 0)
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(2 * in.unit));
+  else
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-2 * in.unit));
+  return q;
+}
+
+double SizeKernel::rounded_size(const Simplex& s) const {
+  const Size f = size(s);
+  if (f.error == 0) return f.value;
+  return nearest_double(exact_size(s));
+}
+
+int SizeKernel::compare(const Simplex& a, const Simplex& b) { return compare(a, size(a), b, size(b)); }
+
+int SizeKernel::compare(const Simplex& a, const Size& sa, const Simplex& b, const Size& sb) {
+  const int f = compare_filtered(sa, sb);
+  if (f != kUndecided) {
+    ++stats_.compare.filtered;
+    return f;
+  }
+  const Simplex A = sorted(a), B = sorted(b);
+  Scaled in;
+  for (int i = 0; i < A.n; ++i) in.add(pts_[A.v[i]], w_ ? w_[A.v[i]] : 0.0);
+  for (int i = 0; i < B.n; ++i) in.add(pts_[B.v[i]], w_ ? w_[B.v[i]] : 0.0);
+  in.finish();
+  // N_A / D_A - N_B / D_B has the sign of N_A D_B - N_B D_A (D > 0).
+  const int e = exact_sign([&](auto tag) {
+    using T = decltype(tag);
+    T na, da, nb, db;
+    in.size(0, A.n - 1, na, da);
+    in.size(A.n, B.n - 1, nb, db);
+    return T(na * db - nb * da);
+  });
+  ++(e != 0 ? stats_.compare.exact : stats_.compare.perturbed);
+  return e;
+}
+
+int SizeKernel::compare(const Simplex& a, double alpha_sq) {
+  if (std::isinf(alpha_sq)) {
+    ++stats_.compare.filtered;
+    return alpha_sq > 0 ? -1 : 1;
+  }
+  const int f = compare_filtered(size(a), alpha_sq);
+  if (f != kUndecided) {
+    ++stats_.compare.filtered;
+    return f;
+  }
+  const Simplex A = sorted(a);
+  Scaled in;
+  for (int i = 0; i < A.n; ++i) in.add(pts_[A.v[i]], w_ ? w_[A.v[i]] : 0.0);
+  in.alpha = split(alpha_sq);
+  in.finish();
+  const int e = exact_sign([&](auto tag) {
+    using T = decltype(tag);
+    T n, d;
+    in.size(0, A.n - 1, n, d);
+    return T(n - d * in.alpha_value<T>());
+  });
+  ++(e != 0 ? stats_.compare.exact : stats_.compare.perturbed);
+  return e;
+}
+
+bool SizeKernel::attached(const Simplex& simplex, Index q) {
+  const Simplex s = sorted(simplex);
+  if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached");
+  const double w0 = w_ ? w_[s.v[0]] : 0.0, wq = w_ ? w_[q] : 0.0;
+  const Vec3& p0 = pts_[s.v[0]];
+  bool ok = true;
+  Local<Approx> l;
+  l.k = s.n - 1;
+  l.w0 = area_leaf(w0, ok);
+  for (int i = 0; i < l.k; ++i) {
+    const Vec3& p = pts_[s.v[i + 1]];
+    l.u[i][0] = length_leaf(p.x - p0.x, ok);
+    l.u[i][1] = length_leaf(p.y - p0.y, ok);
+    l.u[i][2] = length_leaf(p.z - p0.z, ok);
+    l.dw[i] = area_leaf(w_ ? w_[s.v[i + 1]] - w0 : 0.0, ok);
+  }
+  const Vec3& pq = pts_[q];
+  const Approx v[3] = {length_leaf(pq.x - p0.x, ok), length_leaf(pq.y - p0.y, ok),
+                       length_leaf(pq.z - p0.z, ok)};
+  const Approx dq = area_leaf(w0 - wq, ok);
+  Approx den;
+  const Approx P = power_terms(l, v, dq, den);
+  if (ok) {
+    const double e = kPower[l.k] * P.p + kTiny;
+    if (P.v > e || P.v < -e) {
+      ++stats_.attached.filtered;
+      return P.v < 0;
+    }
+  }
+  Scaled in;
+  for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
+  in.add(pq, wq);
+  in.finish();
+  const int e = exact_sign([&](auto tag) {
+    using T = decltype(tag);
+    const Local<T> loc = in.local<T>(0, s.n - 1);
+    T vq[3], d;
+    for (int a = 0; a < 3; ++a) vq[a] = in.coord<T>(s.n, a) - in.coord<T>(0, a);
+    const T p = power_terms(loc, vq, T(loc.w0 - in.weight<T>(s.n)), d);
+    if (certainly_zero(d)) fail("attached: degenerate simplex (affinely dependent points)");
+    return p;
+  });
+  ++(e != 0 ? stats_.attached.exact : stats_.attached.perturbed);
+  return e < 0;
+}
+
+}  // namespace alpha

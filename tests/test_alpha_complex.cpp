@@ -1,0 +1,153 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "alpha/alpha_complex.hpp"
+#include "point_sets.hpp"
+
+using namespace alpha;
+
+namespace {
+
+using C = Classification;
+
+// Points of the closed complex at a level: every present simplex has its
+// faces present (the complex is closed), and the Euler characteristic of
+// the present simplices equals b0 - b1 + b2.
+void check_level(const AlphaComplex& a, Index level) {
+  const Simplices& s = a.simplices();
+  const Triangulation& t = a.triangulation();
+  auto present = [&](const Interval& i) { return AlphaComplex::classify(i, level) != C::exterior; };
+  long chi = 0;
+  for (Index v = 0; v < t.num_points(); ++v)
+    if (t.status(v) == PointStatus::vertex) chi += present(a.vertex_interval(v));
+  for (Index e = 0; e < s.num_edges(); ++e) {
+    if (!present(a.edge_interval(e))) continue;
+    --chi;
+    for (Index v : s.edge(e)) REQUIRE(present(a.vertex_interval(v)));
+  }
+  for (Index f = 0; f < s.num_triangles(); ++f) {
+    if (!present(a.triangle_interval(f))) continue;
+    ++chi;
+    for (Index e : s.triangle_edges(f)) REQUIRE(present(a.edge_interval(e)));
+  }
+  for (Index c = 0; c < t.num_cells(); ++c) {
+    if (a.classify_cell(c, level) != C::interior) continue;
+    --chi;
+    for (int i = 0; i < 4; ++i) REQUIRE(present(a.triangle_interval(s.cell_triangle(c, i))));
+  }
+  const auto b = a.betti(level);
+  CHECK(chi == long(b[0]) - long(b[1]) + long(b[2]));
+}
+
+}  // namespace
+
+TEST_CASE("Regular tetrahedron: known sizes and classification", "[alpha]") {
+  // Edge length 2*sqrt(2): edge 2, triangle 8/3, tetrahedron 3.
+  const Triangulation t(std::vector<Vec3>{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}});
+  const AlphaComplex a(t);
+  REQUIRE(a.spectrum_size() == 4);
+  CHECK(a.spectrum_value(0) == 0.0);
+  CHECK(a.spectrum_value(1) == 2.0);
+  CHECK(a.spectrum_value(2) == Approx(8.0 / 3.0));
+  CHECK(a.spectrum_value(3) == 3.0);
+  CHECK(a.level(1.99) == 1);
+  CHECK(a.level(2.0) == 2);  // a value equal to alpha counts as present
+  const auto at = [&](double alpha_sq) { return a.counts(a.level(alpha_sq)); };
+  CHECK(at(-1)[0][int(C::exterior)] == 4);
+  CHECK(at(0)[0][int(C::singular)] == 4);
+  CHECK(at(2)[1][int(C::singular)] == 6);
+  CHECK(at(2)[0][int(C::regular)] == 4);
+  CHECK(at(2.7)[2][int(C::singular)] == 4);
+  CHECK(at(3)[3][int(C::interior)] == 1);
+  CHECK(at(3)[2][int(C::regular)] == 4);  // hull triangles never become interior
+  CHECK(a.volume(a.level(3)) == Approx(8.0 / 3.0));
+  CHECK(a.optimal_level() == 2);
+}
+
+TEST_CASE("Attached flags match brute force over all points; intervals are nested", "[alpha]") {
+  for (std::uint64_t seed : {1, 2}) {
+    const bool weighted = seed == 2;
+    const auto pts = testing::random_points(120, seed, 10.0);
+    const Triangulation t = weighted ? Triangulation(pts, testing::random_weights(120, seed, 0.0, 3.0)) : Triangulation(pts);
+    const AlphaComplex a(t);
+    const Simplices& s = a.simplices();
+    SizeKernel k(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
+    // Attached: some input point lies strictly inside the smallest orthosphere
+    // (for a regular triangulation only the cofaces' vertices can).
+    auto brute_attached = [&](const Simplex& x) {
+      for (Index q = 0; q < t.num_points(); ++q) {
+        if (t.status(q) != PointStatus::vertex || std::find(x.v.begin(), x.v.begin() + x.n, q) != x.v.begin() + x.n)
+          continue;
+        if (k.attached(x, q)) return true;
+      }
+      return false;
+    };
+    for (Index f = 0; f < s.num_triangles(); ++f) {
+      const auto& v = s.triangle(f);
+      CHECK(a.triangle_interval(f).attached == brute_attached(Simplex(v[0], v[1], v[2])));
+      for (Index e : s.triangle_edges(f)) CHECK(a.edge_interval(e).entry <= a.triangle_interval(f).entry);
+      for (Index c : s.triangle_cells(f)) CHECK(a.triangle_interval(f).entry <= a.cell_entry(c));
+    }
+    for (Index e = 0; e < s.num_edges(); ++e) {
+      CHECK(a.edge_interval(e).attached == brute_attached(Simplex(s.edge(e)[0], s.edge(e)[1])));
+      for (Index v : s.edge(e)) CHECK(a.vertex_interval(v).entry <= a.edge_interval(e).entry);
+    }
+    for (Index lvl = 0; lvl <= a.spectrum_size(); lvl += 7) check_level(a, lvl);
+    // The seed's bound on the number of distinct alpha shapes.
+    const std::size_t n = t.num_vertices();
+    CHECK(a.spectrum_size() <= 2 * n * n - 5 * n);
+  }
+}
+
+TEST_CASE("Integer grid: exact ties, known Betti numbers and volume", "[alpha][degenerate]") {
+  const int n = 4;
+  const Triangulation t(testing::grid_points(n));
+  const AlphaComplex a(t);
+  // Critical values of a unit grid: 0, 1/4 (edges), 1/2 (face diagonals and
+  // squares), 3/4 (cubes); ties are exact.
+  REQUIRE(a.spectrum_size() == 4);
+  CHECK(a.spectrum_value(1) == 0.25);
+  CHECK(a.spectrum_value(2) == 0.5);
+  CHECK(a.spectrum_value(3) == 0.75);
+  CHECK(a.betti(a.level(0)) == std::array<std::size_t, 3>{64, 0, 0});
+  // Unit edges only: a cubical graph with 1 component and E - V + 1 cycles.
+  const std::size_t edges = 3 * n * n * (n - 1);
+  CHECK(a.betti(a.level(0.25)) == std::array<std::size_t, 3>{1, edges - 64 + 1, 0});
+  // Squares filled: the unit cubes are hollow (27 voids).
+  CHECK(a.betti(a.level(0.5)) == std::array<std::size_t, 3>{1, 0, 27});
+  CHECK(a.betti(a.level(0.75)) == std::array<std::size_t, 3>{1, 0, 0});
+  CHECK(a.volume(a.level(0.75)) == Approx(27.0).epsilon(1e-12));
+  CHECK(a.volume(a.level(0.5)) == 0.0);
+  for (Index lvl = 0; lvl <= a.spectrum_size(); ++lvl) check_level(a, lvl);
+}
+
+TEST_CASE("Dense ball sample: volume near the hull's at large alpha", "[alpha]") {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts;
+  while (pts.size() < 4000) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    if (p.x * p.x + p.y * p.y + p.z * p.z <= 1) pts.push_back(p);
+  }
+  const Triangulation t(pts);
+  const AlphaComplex a(t);
+  const double hull = a.volume(Index(a.spectrum_size()));
+  CHECK(a.volume(a.level(1.0)) == Approx(hull).epsilon(0.01));
+  CHECK(a.betti(a.level(1.0)) == std::array<std::size_t, 3>{1, 0, 0});
+  // The boundary mesh is closed: every edge in exactly two boundary triangles.
+  const ShapeBoundary b = a.boundary(a.level(1.0));
+  std::map<std::pair<Index, Index>, int> uses;
+  for (const auto& f : b.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(f[k], f[(k + 1) % 3])];
+  for (const auto& [edge, count] : uses) CHECK(count == 2);
+  // Outward orientation: the divergence theorem gives back the volume.
+  double signed_volume = 0;
+  for (const auto& f : b.triangles) {
+    const Vec3 &p = t.point(f[0]), &q = t.point(f[1]), &r = t.point(f[2]);
+    signed_volume += (p.x * (q.y * r.z - q.z * r.y) - p.y * (q.x * r.z - q.z * r.x) + p.z * (q.x * r.y - q.y * r.x)) / 6;
+  }
+  CHECK(signed_volume == Approx(a.volume(a.level(1.0))).epsilon(1e-9));
+}

@@ -1,0 +1,473 @@
+#include <catch2/catch.hpp>
+#include <gmpxx.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "alpha/error.hpp"
+#include "alpha/sizes.hpp"
+#include "point_sets.hpp"
+
+using namespace alpha;
+
+namespace {
+
+// Independent oracle: the smallest orthogonal sphere from the Gram system
+// 2 (u_i . u_j) lambda_j = |u_i|^2 - w_i + w_0, x = sum lambda_j u_j, solved
+// by Gaussian elimination in rationals. Nothing here is shared with the
+// library's cross-product formulas. Empty for a degenerate simplex.
+struct Sphere {
+  mpq_class c[3];
+  mpq_class r2;
+};
+
+struct Input {
+  std::vector<Vec3> pts;
+  std::vector<double> w;  // empty: unweighted
+  SizeKernel kernel() const { return SizeKernel(pts.data(), w.empty() ? nullptr : w.data()); }
+  mpq_class coord(Index i, int a) const { return mpq_class(a == 0 ? pts[i].x : a == 1 ? pts[i].y : pts[i].z); }
+  mpq_class weight(Index i) const { return w.empty() ? mpq_class(0) : mpq_class(w[i]); }
+};
+
+std::optional<Sphere> oracle(const Input& in, const Simplex& s) {
+  const int k = s.n - 1;
+  mpq_class u[3][3], m[3][4];
+  for (int i = 0; i < k; ++i)
+    for (int a = 0; a < 3; ++a) u[i][a] = in.coord(s.v[i + 1], a) - in.coord(s.v[0], a);
+  for (int i = 0; i < k; ++i) {
+    for (int j = 0; j < k; ++j) m[i][j] = 2 * (u[i][0] * u[j][0] + u[i][1] * u[j][1] + u[i][2] * u[j][2]);
+    m[i][k] = m[i][i] / 2 - in.weight(s.v[i + 1]) + in.weight(s.v[0]);
+  }
+  for (int col = 0; col < k; ++col) {
+    int piv = col;
+    while (piv < k && m[piv][col] == 0) ++piv;
+    if (piv == k) return std::nullopt;
+    for (int j = 0; j <= k; ++j) std::swap(m[col][j], m[piv][j]);
+    for (int r = 0; r < k; ++r) {
+      if (r == col || m[r][col] == 0) continue;
+      const mpq_class f = m[r][col] / m[col][col];
+      for (int j = col; j <= k; ++j) m[r][j] -= f * m[col][j];
+    }
+  }
+  Sphere sp;
+  mpq_class x[3];
+  for (int j = 0; j < k; ++j) {
+    const mpq_class lambda = m[j][k] / m[j][j];
+    for (int a = 0; a < 3; ++a) x[a] += lambda * u[j][a];
+  }
+  for (int a = 0; a < 3; ++a) sp.c[a] = in.coord(s.v[0], a) + x[a];
+  sp.r2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - in.weight(s.v[0]);
+  return sp;
+}
+
+// Power distance of point q to a sphere.
+mpq_class power(const Input& in, const Sphere& sp, Index q) {
+  mpq_class d = -sp.r2 - in.weight(q);
+  for (int a = 0; a < 3; ++a) d += (in.coord(q, a) - sp.c[a]) * (in.coord(q, a) - sp.c[a]);
+  return d;
+}
+
+int sign(const mpq_class& q) { return sgn(q); }
+
+Simplex random_simplex(std::mt19937_64& rng, std::size_t n, int vertices) {
+  std::uniform_int_distribution<Index> pick(0, Index(n - 1));
+  Simplex s;
+  s.n = vertices;
+  for (int i = 0; i < vertices; ++i) {
+    bool fresh;
+    do {
+      s.v[i] = pick(rng);
+      fresh = true;
+      for (int j = 0; j < i; ++j) fresh = fresh && s.v[j] != s.v[i];
+    } while (!fresh);
+  }
+  return s;
+}
+
+// Random non-degenerate simplices of 1..4 vertices with their exact sizes.
+void random_simplices(const Input& in, std::size_t count, std::uint64_t seed, std::vector<Simplex>& out,
+                      std::vector<mpq_class>& sizes) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> dim(1, 4);
+  while (out.size() < count) {
+    const Simplex s = random_simplex(rng, in.pts.size(), dim(rng));
+    if (auto sp = oracle(in, s)) out.push_back(s), sizes.push_back(sp->r2);
+  }
+}
+
+// The filtered interval contains the exact size, exact_size() is exact and
+// rounded_size() is the nearest double.
+void check_size(SizeKernel& k, const Input& in, const Simplex& s, const mpq_class& exact) {
+  const Size f = k.size(s);
+  CHECK(k.exact_size(s) == exact);
+  if (std::isfinite(f.error)) CHECK(abs(mpq_class(f.value) - exact) <= mpq_class(f.error));
+  const double r = k.rounded_size(s);
+  const mpq_class dr = abs(mpq_class(r) - exact);
+  CHECK(dr <= abs(mpq_class(std::nextafter(r, HUGE_VAL)) - exact));
+  CHECK(dr <= abs(mpq_class(std::nextafter(r, -HUGE_VAL)) - exact));
+  (void)in;
+}
+
+// All pairs: compare() against the exact order, sizes against alpha values.
+void check_all_pairs(SizeKernel& k, const std::vector<Simplex>& s, const std::vector<mpq_class>& exact) {
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (k.compare(s[i], s[j]) != sign(exact[i] - exact[j])) ++wrong;
+    for (std::size_t j = i; j < std::min(s.size(), i + 5); ++j) {
+      const double alpha = exact[j].get_d();  // exact size when that is a double
+      if (k.compare(s[i], alpha) != sign(exact[i] - mpq_class(alpha))) ++wrong;
+    }
+  }
+  CHECK(wrong == 0);
+}
+
+Input hand_built() {
+  Input in;
+  in.pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}};
+  return in;
+}
+
+}  // namespace
+
+TEST_CASE("sizes of hand-built simplices have their known exact values", "[sizes]") {
+  Input in = hand_built();
+  SizeKernel k = in.kernel();
+  // Unit edge: r^2 = 1/4.
+  CHECK(k.exact_size({0, 1}) == mpq_class(1, 4));
+  CHECK(k.rounded_size({0, 1}) == 0.25);
+  // Equilateral triangles of side s = sqrt(2) and 3 sqrt(2): s^2 / 3.
+  CHECK(k.exact_size({1, 2, 3}) == mpq_class(2, 3));
+  CHECK(k.exact_size({7, 8, 9}) == mpq_class(6));
+  CHECK(k.rounded_size({1, 2, 3}) == 2.0 / 3.0);
+  // Regular tetrahedron in the unit cube: the cube's circumsphere, 3/4.
+  CHECK(k.exact_size({0, 4, 5, 6}) == mpq_class(3, 4));
+  CHECK(k.compare({0, 4, 5, 6}, 0.75) == 0);
+  CHECK(k.compare({0, 4, 5, 6}, std::nextafter(0.75, 1.0)) == -1);
+  CHECK(k.compare({0, 4, 5, 6}, std::nextafter(0.75, 0.0)) == 1);
+  // Unweighted vertex: 0.
+  CHECK(k.exact_size(Simplex(3)) == 0);
+  // Centers.
+  const Vec3 ce = k.center({0, 1}), ct = k.center({1, 2, 3}), cc = k.center({0, 4, 5, 6});
+  CHECK(ce.x == Approx(0.5));
+  CHECK(std::fabs(ce.y) + std::fabs(ce.z) < 1e-15);
+  CHECK(ct.x == Approx(1.0 / 3));
+  CHECK(ct.y == Approx(1.0 / 3));
+  CHECK(ct.z == Approx(1.0 / 3));
+  CHECK(cc.x == Approx(0.5));
+  CHECK(cc.y == Approx(0.5));
+  CHECK(cc.z == Approx(0.5));
+
+  SECTION("weighted") {
+    Input wi;
+    wi.pts = {{0, 0, 0}, {2, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 2, 0}};
+    wi.w = {1, 0, 1, 1, 0.5};
+    SizeKernel kw = wi.kernel();
+    // w0 = 1, w1 = 0 at distance 2: center t = (4 + w0 - w1) / 4 = 5/4,
+    // r^2 = t^2 - w0 = 9/16.
+    CHECK(kw.exact_size({0, 1}) == mpq_class(9, 16));
+    CHECK(kw.exact_size({1, 0}) == mpq_class(9, 16));
+    CHECK(kw.center({0, 1}).x == Approx(1.25));
+    CHECK(kw.center({1, 0}).x == Approx(1.25));
+    // Balls of weight 1 at distance 1 overlap deeply: 1/4 - 1 = -3/4.
+    CHECK(kw.exact_size({2, 3}) == mpq_class(-3, 4));
+    CHECK(kw.compare({2, 3}, -0.75) == 0);
+    CHECK(kw.compare({2, 3}, 0.0) == -1);
+    CHECK(kw.compare({2, 3}, {0, 1}) == -1);
+    // A vertex: -w.
+    CHECK(kw.exact_size(Simplex(4)) == mpq_class(-1, 2));
+    CHECK(kw.size(Simplex(4)).value == -0.5);
+    CHECK(kw.size(Simplex(4)).error == 0);
+    CHECK(kw.compare(Simplex(4), -0.5) == 0);
+    CHECK(kw.compare(Simplex(0), Simplex(2)) == 0);
+    // A weighted triangle against the oracle.
+    const auto sp = oracle(wi, {0, 1, 4});
+    REQUIRE(sp);
+    CHECK(kw.exact_size({0, 1, 4}) == sp->r2);
+  }
+}
+
+TEST_CASE("sizes do not depend on the order of the vertices", "[sizes]") {
+  Input in;
+  in.pts = testing::random_points(4, 11);
+  in.w = testing::random_weights(4, 12, 0, 0.1);
+  SizeKernel k = in.kernel();
+  const Size a = k.size({0, 1, 2, 3});
+  for (const Simplex& s : {Simplex(3, 2, 1, 0), Simplex(1, 3, 0, 2), Simplex(2, 0, 3, 1)}) {
+    CHECK(k.size(s).value == a.value);
+    CHECK(k.size(s).error == a.error);
+    CHECK(k.compare(s, {0, 1, 2, 3}) == 0);
+  }
+  CHECK(k.compare({2, 0, 1}, {1, 2, 0}) == 0);
+}
+
+TEST_CASE("filtered comparisons agree with exact rationals on random simplices", "[sizes]") {
+  for (const bool weighted : {false, true}) {
+    INFO("weighted " << weighted);
+    Input in;
+    in.pts = testing::random_points(300, weighted ? 21 : 22, 10.0);
+    if (weighted) in.w = testing::random_weights(300, 23, -0.5, 2.0);
+    SizeKernel k = in.kernel();
+    std::vector<Simplex> s;
+    std::vector<mpq_class> exact;
+    random_simplices(in, 400, weighted ? 24 : 25, s, exact);
+    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
+    check_all_pairs(k, s, exact);
+    // Random sizes almost never tie: the filter decides nearly everything.
+    CHECK(k.stats().compare.filtered > 0.99 * k.stats().compare.calls());
+  }
+}
+
+TEST_CASE("ties on an integer grid compare exactly equal", "[sizes]") {
+  Input in;
+  in.pts = testing::grid_points(4);
+  SizeKernel k = in.kernel();
+  std::vector<Simplex> s;
+  std::vector<mpq_class> exact;
+  random_simplices(in, 300, 31, s, exact);
+  for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
+  check_all_pairs(k, s, exact);
+  CHECK(k.stats().compare.perturbed > 1000);  // exact ties, each returned as 0
+}
+
+TEST_CASE("congruent triangles and cospherical tetrahedra share their size", "[sizes]") {
+  // Images of one triangle under the 48 symmetries of the cube and a few
+  // translations, on a dyadic grid off the origin (exact in doubles).
+  const std::array<std::array<int, 3>, 3> tri{{{0, 0, 0}, {3, 1, 0}, {1, 2, 5}}};
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const double weight : {0.0, 0.3125}) {
+    Input in;
+    for (const auto& p : perms)
+      for (int signs = 0; signs < 8; ++signs)
+        for (int t = 0; t < 3; ++t)
+          for (const auto& v : tri) {
+            double c[3];
+            for (int a = 0; a < 3; ++a) c[a] = ((signs >> a) & 1 ? -1 : 1) * v[p[a]] + 7 * t;
+            in.pts.push_back({1024.125 + 0.375 * c[0], -3.5 + 0.375 * c[1], 7.75 + 0.375 * c[2]});
+          }
+    if (weight != 0) in.w.assign(in.pts.size(), weight);
+    SizeKernel k = in.kernel();
+    const Simplex first(0, 1, 2);
+    int unequal = 0;
+    for (Index i = 3; i < in.pts.size(); i += 3) unequal += k.compare(first, {i, i + 1, i + 2}) != 0;
+    CHECK(unequal == 0);
+    const auto sp = oracle(in, first);
+    REQUIRE(sp);
+    CHECK(k.exact_size(first) == sp->r2);
+  }
+
+  // Any 4 non-coplanar corners of a cube lie on its circumsphere.
+  Input cube;
+  for (int i = 0; i < 8; ++i) cube.pts.push_back({0.5 + 0.25 * (i & 1), 2.0 + 0.25 * ((i >> 1) & 1), -1.0 + 0.25 * (i >> 2)});
+  SizeKernel k = cube.kernel();
+  std::vector<Simplex> tets;
+  for (Index a = 0; a < 8; ++a)
+    for (Index b = a + 1; b < 8; ++b)
+      for (Index c = b + 1; c < 8; ++c)
+        for (Index d = c + 1; d < 8; ++d)
+          if (oracle(cube, {a, b, c, d})) tets.push_back({a, b, c, d});
+  CHECK(tets.size() == 58);  // 70 minus 6 faces and 6 diagonal planes
+  int unequal = 0;
+  for (const Simplex& t : tets) {
+    unequal += k.compare(t, tets[0]) != 0;
+    unequal += k.compare(t, 3 * 0.25 * 0.25 / 4) != 0;  // (side^2) 3/4
+  }
+  CHECK(unequal == 0);
+}
+
+TEST_CASE("sizes one ulp apart are ordered exactly", "[sizes]") {
+  Input in;
+  in.pts = testing::random_points(12, 41, 100.0);
+  in.w = testing::random_weights(12, 42, 0, 5);
+  // Copies of simplex {0,1,2} and {3..6} with one coordinate nudged by one ulp.
+  for (int c = 0; c < 7; ++c) {
+    for (int a = 0; a < 3; ++a)
+      for (const double dir : {-HUGE_VAL, HUGE_VAL}) {
+        Vec3 p = in.pts[c];
+        double& x = a == 0 ? p.x : a == 1 ? p.y : p.z;
+        x = std::nextafter(x, dir);
+        in.pts.push_back(p);
+        in.w.push_back(in.w[c]);
+      }
+  }
+  SizeKernel k = in.kernel();
+  std::vector<Simplex> s;
+  std::vector<mpq_class> exact;
+  auto add = [&](Simplex x) {
+    const auto sp = oracle(in, x);
+    REQUIRE(sp);
+    s.push_back(x), exact.push_back(sp->r2);
+  };
+  add({0, 1}), add({0, 1, 2}), add({3, 4, 5, 6});
+  for (Index i = 12; i < in.pts.size(); ++i) {
+    const int c = int(i - 12) / 6;  // the original this point copies
+    if (c < 2) add({i, Index(1 - c)});
+    if (c < 3) {
+      Simplex t(0, 1, 2);
+      t.v[c] = i;
+      add(t);
+    } else {
+      Simplex t(3, 4, 5, 6);
+      t.v[c - 3] = i;
+      add(t);
+    }
+  }
+  check_all_pairs(k, s, exact);
+  CHECK(k.stats().compare.exact > 0);
+}
+
+TEST_CASE("inputs outside the filter's range are compared exactly", "[sizes]") {
+  for (const double scale : {0x1p-200, 0x1p300}) {
+    Input in;
+    in.pts = testing::random_points(40, 51);
+    for (Vec3& p : in.pts) p = {p.x * scale, p.y * scale, p.z * scale};
+    SizeKernel k = in.kernel();
+    std::vector<Simplex> s;
+    std::vector<mpq_class> exact;
+    random_simplices(in, 40, 52, s, exact);
+    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
+    check_all_pairs(k, s, exact);
+  }
+}
+
+TEST_CASE("degenerate simplices have no size", "[sizes]") {
+  Input in;
+  in.pts = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 0}};
+  SizeKernel k = in.kernel();
+  CHECK_THROWS_AS(k.compare({0, 1, 2}, {0, 3}), Error);    // collinear
+  CHECK_THROWS_AS(k.compare({0, 3, 4, 5}, 1.0), Error);    // coplanar
+  CHECK_THROWS_AS(k.exact_size({0, 6}), Error);            // same point twice
+  CHECK_THROWS_AS(k.attached({0, 1, 2}, 3), Error);
+  CHECK(!std::isfinite(k.size({0, 1, 2}).error));
+}
+
+TEST_CASE("attached: obtuse and acute triangles, points on the sphere", "[sizes]") {
+  Input in;
+  in.pts = {{0, 0, 0}, {4, 0, 0}, {1, 1, 0}, {2, 3, 0}, {2, 2, 0}, {0, 4, 0}, {2, 2, 1}, {2, 2, 3}, {4, 4, 0}, {2, 0, 2}};
+  SizeKernel k = in.kernel();
+  // The edge opposite the obtuse angle is attached by its vertex.
+  CHECK(k.attached({0, 1}, 2));
+  CHECK(!k.attached({0, 1}, 3));  // acute triangle
+  CHECK(!k.attached({0, 1}, 4));  // right angle: on the sphere, not attached
+  CHECK(!k.attached({1, 0}, 4));
+  CHECK(!k.attached({0, 1}, 0));  // its own vertex: on the sphere
+  // Triangle (0,0,0),(4,0,0),(0,4,0): center (2,2,0), r^2 = 8.
+  CHECK(k.attached({0, 1, 5}, 6));
+  CHECK(!k.attached({0, 1, 5}, 7));
+  CHECK(!k.attached({5, 0, 1}, 8));  // on the sphere, in the plane
+  CHECK(!k.attached({0, 1, 5}, 9));  // on the sphere, off the plane
+  CHECK(k.stats().attached.perturbed == 5);
+
+  SECTION("weighted vertices and edges") {
+    Input w;
+    w.pts = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}};
+    w.w = {0, 2, 0, 0.5};
+    SizeKernel kw = w.kernel();
+    CHECK(kw.attached(Simplex(0), 1));   // 1 - 2 < 0
+    CHECK(!kw.attached(Simplex(1), 0));  // 1 + 2 > 0
+    CHECK(!kw.attached(Simplex(0), 3));  // 2 - 0.5 > 0
+    // Edge {0,2}: center (1,0,0), r^2 = 1; q = (1,1,0) with w 0.5: 1 - 1 - 0.5 < 0.
+    CHECK(kw.attached({0, 2}, 3));
+    // Its weight exactly cancels the margin: 1 - 1 - 0 on the sphere when w = 0.
+    w.w[3] = 0;
+    CHECK(!kw.attached({0, 2}, 3));
+  }
+}
+
+TEST_CASE("attached agrees with exact power distances", "[sizes]") {
+  for (const bool grid : {false, true}) {
+    INFO("grid " << grid);
+    Input in;
+    in.pts = grid ? testing::grid_points(4) : testing::random_points(200, 61);
+    in.w = grid ? std::vector<double>(in.pts.size(), 0.0) : testing::random_weights(200, 62, 0, 0.05);
+    if (grid)
+      for (std::size_t i = 0; i < in.w.size(); ++i) in.w[i] = 0.25 * double(i % 3);
+    SizeKernel k = in.kernel();
+    std::mt19937_64 rng(63);
+    std::uniform_int_distribution<int> dim(1, 3);
+    std::uniform_int_distribution<Index> pick(0, Index(in.pts.size() - 1));
+    int wrong = 0, on_sphere = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+      const Simplex s = random_simplex(rng, in.pts.size(), dim(rng));
+      const auto sp = oracle(in, s);
+      if (!sp) continue;
+      const Index q = pick(rng);
+      const mpq_class pi = power(in, *sp, q);
+      on_sphere += pi == 0;
+      wrong += k.attached(s, q) != (pi < 0);
+    }
+    CHECK(wrong == 0);
+    if (grid) CHECK(on_sphere > 0);
+  }
+}
+
+TEST_CASE("size kernel throughput", "[.][sizes_bench]") {
+  using Clock = std::chrono::steady_clock;
+  auto ns_per = [](Clock::time_point t0, std::size_t n) {
+    return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / double(n);
+  };
+  // 4096 points stay in cache (arithmetic cost); 10^6 points scattered at
+  // random add a cache miss per vertex (as a careless caller would pay).
+  const std::size_t m = 1000000;
+  for (const std::size_t n : {std::size_t(4096), std::size_t(1000000)}) {
+    Input in;
+    in.pts = testing::random_points(n, 71);
+    std::mt19937_64 rng(72);
+    for (const bool weighted : {false, true}) {
+      if (weighted) in.w = testing::random_weights(n, 73, 0, 1e-4);
+      SizeKernel k = in.kernel();
+      for (int vertices = 2; vertices <= 4; ++vertices) {
+        std::vector<Simplex> s(m);
+        for (auto& x : s) x = random_simplex(rng, n, vertices);
+        double sum = 0;
+        auto t0 = Clock::now();
+        for (const auto& x : s) sum += k.size(x).value;
+        const double t_size = ns_per(t0, m);
+        int acc = 0;
+        t0 = Clock::now();
+        for (std::size_t i = 0; i + 1 < m; ++i) acc += k.compare(s[i], s[i + 1]);
+        const double t_cmp = ns_per(t0, m - 1);
+        t0 = Clock::now();
+        for (std::size_t i = 0; i < m; ++i) acc += k.compare(s[i], 1e-3);
+        const double t_alpha = ns_per(t0, m);
+        std::printf("n=%zu %s %d vertices: size %.1f ns, compare %.1f ns, compare(alpha) %.1f ns (%llu exact) [%g %d]\n",
+                    n, weighted ? "weighted  " : "unweighted", vertices, t_size, t_cmp, t_alpha,
+                    static_cast<unsigned long long>(k.stats().compare.exact + k.stats().compare.perturbed), sum, acc);
+      }
+      std::vector<Simplex> s(m);
+      std::vector<Index> q(m);
+      for (std::size_t i = 0; i < m; ++i) s[i] = random_simplex(rng, n, 2 + int(i % 2)), q[i] = Index(rng() % n);
+      int acc = 0;
+      auto t0 = Clock::now();
+      for (std::size_t i = 0; i < m; ++i) acc += k.attached(s[i], q[i]);
+      std::printf("n=%zu %s attached (edges, triangles): %.1f ns (%llu exact) [%d]\n", n,
+                  weighted ? "weighted  " : "unweighted", ns_per(t0, m),
+                  static_cast<unsigned long long>(k.stats().attached.exact + k.stats().attached.perturbed), acc);
+    }
+  }
+  // Exact paths: tied tetrahedra of a grid cube (128-bit) and one-ulp apart
+  // triangles of random points (GMP).
+  Input cube;
+  for (int i = 0; i < 8; ++i) cube.pts.push_back({double(i & 1), double((i >> 1) & 1), double(i >> 2)});
+  SizeKernel kc = cube.kernel();
+  const std::size_t reps = 200000;
+  int acc = 0;
+  auto t0 = Clock::now();
+  for (std::size_t i = 0; i < reps; ++i) acc += kc.compare({0, 3, 5, 6}, {1, 2, 4, 7});
+  std::printf("exact tie, grid tetrahedra (128-bit): %.1f ns [%d]\n", ns_per(t0, reps), acc);
+  Input near;
+  near.pts = testing::random_points(3, 74);
+  near.pts.push_back({std::nextafter(near.pts[0].x, 2.0), near.pts[0].y, near.pts[0].z});
+  SizeKernel kn = near.kernel();
+  t0 = Clock::now();
+  for (std::size_t i = 0; i < reps / 10; ++i) acc += kn.compare({0, 1, 2}, {3, 1, 2});
+  std::printf("exact, triangles one ulp apart (GMP): %.1f ns [%d]\n", ns_per(t0, reps / 10), acc);
+  t0 = Clock::now();
+  for (std::size_t i = 0; i < reps / 10; ++i) acc += kn.exact_size({0, 1, 2}) > 0;
+  std::printf("exact_size of a triangle (GMP): %.1f ns [%d]\n", ns_per(t0, reps / 10), acc);
+}
