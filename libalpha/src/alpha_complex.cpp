@@ -74,7 +74,8 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
     return size_of[g];
   };
   auto less = [&](std::size_t a, std::size_t b) {  // exact, kInf last
-    if (a == kInf || b == kInf) return a != kInf && b == kInf;
+    if (a == b) return false;
+    if (a == kInf || b == kInf) return b == kInf;
     return sizes.compare(simplex_of(a), size(a), simplex_of(b), size(b)) < 0;
   };
   auto min_of = [&](std::size_t a, std::size_t b) { return less(b, a) ? b : a; };

@@ -1,5 +1,7 @@
 #include "exact.hpp"
 
+#include "dyadic.hpp"
+
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -11,23 +13,6 @@
 
 namespace alpha::exact {
 namespace {
-
-__extension__ typedef __int128 i128;
-
-// v = m * 2^e with m odd (or v = 0 with e = INT_MAX).
-struct Dyadic {
-  std::int64_t m = 0;
-  int e = INT_MAX;
-};
-
-Dyadic split(double v) {
-  if (v == 0) return {};
-  int e;
-  double f = std::frexp(v, &e);
-  auto m = static_cast<std::int64_t>(std::ldexp(f, 53));
-  int tz = std::countr_zero(static_cast<std::uint64_t>(m));
-  return {m >> tz, e - 53 + tz};
-}
 
 int min_exponent(const Dyadic* d, int n) {
   int e = INT_MAX;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "alpha/error.hpp"
+#include "dyadic.hpp"
 
 namespace alpha {
 namespace {
@@ -148,7 +149,7 @@ Approx operator*(const Approx& a, const Approx& b) { return {a.v * b.v, a.p * b.
 
 bool in_range(double x, double lo, double hi) {
   const double a = std::fabs(x);
-  return a == 0 || (a >= lo && a <= hi);  // false for NaN and inf
+  return (a == 0) | ((a >= lo) & (a <= hi));  // false for NaN and inf; no branches
 }
 Approx length_leaf(double x, bool& ok) {
   ok &= in_range(x, kMinLength, kMaxLength);
@@ -165,7 +166,6 @@ Approx area_leaf(double x, bool& ok) {
 // (same idea as exact.cpp). 128-bit integers that detect overflow first,
 // GMP when any step overflowed.
 
-__extension__ typedef __int128 i128;
 
 struct Wide {
   i128 v = 0;
@@ -192,20 +192,6 @@ Wide operator*(const Wide& a, const Wide& b) {
 
 bool certainly_zero(const Wide& x) { return x.ok && x.v == 0; }
 bool certainly_zero(const mpz_class& x) { return x == 0; }
-
-struct Dyadic {
-  std::int64_t m = 0;  // odd, or 0 for the value 0
-  int e = INT_MAX;
-};
-
-Dyadic split(double v) {
-  if (!std::isfinite(v)) fail("sizes: non-finite coordinate, weight or alpha");
-  if (v == 0) return {};
-  int e;
-  const auto m = static_cast<std::int64_t>(std::ldexp(std::frexp(v, &e), 53));
-  const int tz = std::countr_zero(static_cast<std::uint64_t>(m));
-  return {m >> tz, e - 53 + tz};
-}
 
 template <class T> T to_int(const Dyadic& d, int shift);
 template <> Wide to_int<Wide>(const Dyadic& d, int shift) {
@@ -310,10 +296,18 @@ namespace {
 
 // The simplex with sorted indices: p0 is the smallest index, so that a
 // simplex gives the same doubles whatever the order of its vertices.
+// Unused slots are set to kNone, the largest index, and all four sorted by
+// a branch-free network: random vertex orders cost no mispredictions.
 Simplex sorted(const Simplex& s) {
   if (s.n < 1 || s.n > 4) fail("sizes: a simplex has 1 to 4 vertices");
   Simplex r = s;
-  std::sort(r.v.begin(), r.v.begin() + r.n);
+  for (int i = 1; i < 4; ++i) r.v[i] = i < s.n ? s.v[i] : kNone;
+  auto order = [&](int i, int j) {
+    const Index a = r.v[i], b = r.v[j];
+    const Index swap = (a ^ b) & (0u - Index(b < a));  // xor mask, 0 when in order
+    r.v[i] = a ^ swap, r.v[j] = b ^ swap;
+  };
+  order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
   return r;
 }
 

@@ -12,7 +12,7 @@
 // input is small dyadic numbers (grids), then GMP. Exact ties return 0.
 //
 // A SizeKernel is cheap to create and owns its counters; it is not shared
-// between threads (one per thread). Its size()/center() are const.
+// between threads (one per thread); its non-counting queries are const.
 #pragma once
 #include <gmpxx.h>
 

@@ -1,0 +1,208 @@
+#!/usr/bin/env bash
+# CLI tests of `alphapocket delaunay`, one case per CTest test.
+# Usage: delaunay.sh ALPHAPOCKET REPO_ROOT CASE
+# Needs only bash, grep and coreutils (no python, no jq): a fresh Debian 12
+# machine has them.
+set -euo pipefail
+
+exe=$1
+root=$2
+case_name=$3
+data=$root/tests/data
+pdb=$root/examples/data/1a26A.pdb
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+fail() {
+  echo "FAIL [$case_name]: $*" >&2
+  echo "--- stdout:" >&2
+  cat "$tmp/out" >&2 || true
+  echo "--- stderr:" >&2
+  cat "$tmp/err" >&2 || true
+  exit 1
+}
+
+# run ARGS...: runs alphapocket, keeps stdout, stderr and the exit code.
+run() {
+  set +e
+  "$exe" "$@" >"$tmp/out" 2>"$tmp/err"
+  rc=$?
+  set -e
+}
+
+# The JSON value of KEY in stdout (compact, one object on one line).
+json_value() {
+  grep -o "\"$1\":[^,}]*" "$tmp/out" | head -n 1 | cut -d: -f2
+}
+
+expect_json() {  # KEY VALUE
+  local got
+  got=$(json_value "$1")
+  [[ "$got" == "$2" ]] || fail "\"$1\" is '$got', expected '$2'"
+}
+
+# A successful --json run: exit 0, exactly one line on stdout holding one
+# JSON object, and the counts of a triangulated ball: V - E + F - T = 1
+# (Euler characteristic) and 4T = 2F - H (each hull triangle bounds one cell).
+expect_json_success() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+  [[ $(wc -l <"$tmp/out") -eq 1 ]] || fail "stdout is not exactly one line"
+  grep -qx '{.*}' "$tmp/out" || fail "stdout is not one JSON object"
+  local v e f t h
+  v=$(json_value vertices) e=$(json_value edges) f=$(json_value triangles)
+  t=$(json_value tetrahedra) h=$(json_value hull_triangles)
+  [[ $((v - e + f - t)) -eq 1 ]] || fail "Euler characteristic V-E+F-T = $((v - e + f - t)), expected 1"
+  [[ $((4 * t)) -eq $((2 * f - h)) ]] || fail "4T = $((4 * t)) but 2F-H = $((2 * f - h))"
+}
+
+# A failed run: non-zero exit, nothing on stdout, and exactly one line on
+# stderr: "ERROR: " followed by the file name (and more).
+expect_error() {  # FILE [MESSAGE-PATTERN]
+  [[ $rc -ne 0 ]] || fail "exit code 0, expected an error"
+  [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
+  [[ $(wc -l <"$tmp/err") -eq 1 ]] || fail "stderr is not exactly one line"
+  grep -qF "ERROR: $1" "$tmp/err" || fail "stderr does not start with 'ERROR: $1'"
+  [[ $(head -c 7 "$tmp/err") == "ERROR: " ]] || fail "stderr does not start with 'ERROR: '"
+  if [[ $# -ge 2 ]]; then
+    grep -qE "$2" "$tmp/err" || fail "stderr does not match '$2'"
+  fi
+}
+
+case $case_name in
+  cube_grid)
+    run delaunay "$data/cube_grid.xyz" --check --json
+    expect_json_success
+    expect_json points 64
+    expect_json vertices 64
+    expect_json duplicates 0
+    expect_json hidden 0
+    expect_json edges 279
+    expect_json triangles 378
+    expect_json tetrahedra 162  # what libalpha gives (a 3x3x3-cube grid has no unique DT)
+    expect_json hull_triangles 108  # 6 faces x 9 squares x 2 triangles
+    expect_json valid true
+    ;;
+  cube_grid_summary)
+    run delaunay "$data/cube_grid.xyz" --check
+    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    grep -q '64 points, 64 vertices' "$tmp/out" || fail "no point count in the summary"
+    grep -q '162 tetrahedra' "$tmp/out" || fail "no tetrahedron count in the summary"
+    grep -q 'valid: yes' "$tmp/out" || fail "no validity in the summary"
+    grep -q 'predicates:.*filtered' "$tmp/err" || fail "predicate counts not logged"
+    grep -q 'bytes/point' "$tmp/err" || fail "memory not logged"
+    ;;
+  no_check)
+    run delaunay "$data/cube_grid.xyz" --json
+    expect_json_success
+    grep -q '"valid"' "$tmp/out" && fail '"valid" present without --check'
+    ;;
+  quiet)
+    run -q delaunay "$data/cube_grid.xyz" --json
+    expect_json_success
+    [[ ! -s "$tmp/err" ]] || fail "stderr not empty with --quiet"
+    ;;
+  weighted)
+    run delaunay "$data/weighted.xyz" --weighted --check --json
+    expect_json_success
+    expect_json points 12
+    expect_json vertices 10
+    expect_json duplicates 1
+    expect_json hidden 1
+    expect_json valid true
+    ;;
+  weighted_file_unweighted)
+    run delaunay "$data/weighted.xyz" --json
+    expect_error "$data/weighted.xyz:6: expected 3 numbers, got 4"
+    ;;
+  pdb)
+    run delaunay "$pdb" --check --json
+    expect_json_success
+    expect_json points 2796
+    expect_json valid true
+    ;;
+  pdb_weighted)
+    run delaunay "$pdb" --weighted --check --json
+    expect_json_success
+    expect_json points 2796
+    expect_json valid true
+    ;;
+  missing_file)
+    run delaunay "$tmp/missing.xyz" --json
+    expect_error "$tmp/missing.xyz" 'no such file'
+    ;;
+  missing_structure)
+    run delaunay "$tmp/missing.pdb" --json
+    expect_error "$tmp/missing.pdb" 'no such file'
+    ;;
+  directory)
+    mkdir "$tmp/dir.xyz"
+    run delaunay "$tmp/dir.xyz" --json
+    expect_error "$tmp/dir.xyz" 'directory'
+    ;;
+  empty_file)
+    : >"$tmp/empty.xyz"
+    run delaunay "$tmp/empty.xyz" --json
+    expect_error "$tmp/empty.xyz" 'empty'
+    ;;
+  empty_structure)
+    : >"$tmp/empty.pdb"
+    run delaunay "$tmp/empty.pdb" --json
+    expect_error "$tmp/empty.pdb" 'empty'
+    ;;
+  only_comments)
+    printf '# nothing here\n\n   \n' >"$tmp/comments.xyz"
+    run delaunay "$tmp/comments.xyz" --json
+    expect_error "$tmp/comments.xyz" 'no points'
+    ;;
+  malformed_line)
+    printf '0 0 0\n1 0 0\n\n# comment\n0 1\n0 0 1\n' >"$tmp/bad.xyz"
+    run delaunay "$tmp/bad.xyz" --json
+    expect_error "$tmp/bad.xyz:5: expected 3 numbers, got 2"
+    ;;
+  trailing_garbage)
+    printf '0 0 0\n1 0 0x\n' >"$tmp/bad.xyz"
+    run delaunay "$tmp/bad.xyz" --json
+    expect_error "$tmp/bad.xyz:2: '0x' is not a number"
+    ;;
+  not_finite)
+    printf '0 0 0\n1 nan 0\n' >"$tmp/bad.xyz"
+    run delaunay "$tmp/bad.xyz" --json
+    expect_error "$tmp/bad.xyz:2: 'nan' is not a finite number"
+    ;;
+  out_of_range)
+    printf '0 0 0\n1 0 -2e15\n' >"$tmp/bad.xyz"
+    run delaunay "$tmp/bad.xyz" --json
+    expect_error "$tmp/bad.xyz:2: number '-2e15' is out of range"
+    ;;
+  negative_radius)
+    printf '0 0 0 1\n1 0 0 -0.5\n' >"$tmp/bad.xyz"
+    run delaunay "$tmp/bad.xyz" --weighted --json
+    expect_error "$tmp/bad.xyz:2: radius '-0.5' is negative"
+    ;;
+  coplanar)
+    printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$tmp/flat.xyz"
+    run -q delaunay "$tmp/flat.xyz" --json  # the read is logged at info level
+    expect_error "$tmp/flat.xyz" 'coplanar'
+    ;;
+  invalid_structure)
+    printf 'data_broken\nloop_\n_atom_site.id\n' >"$tmp/broken.cif"
+    run delaunay "$tmp/broken.cif" --json
+    expect_error "$tmp/broken.cif"
+    ;;
+  usage_error)
+    run delaunay
+    [[ $rc -ne 0 ]] || fail "no error without FILE"
+    [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
+    ;;
+  version)
+    run --version
+    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    grep -q '^alphapocket [0-9]' "$tmp/out" || fail "no version on stdout"
+    ;;
+  *)
+    echo "unknown case: $case_name" >&2
+    exit 2
+    ;;
+esac
+echo "PASS [$case_name]"
