@@ -6,17 +6,10 @@
 #include <numeric>
 #include <tuple>
 
+#include "alpha/error.hpp"
+
 namespace alpha {
 namespace {
-
-// Global ids of the simplices whose size may be a critical value:
-// vertices, then edges, then triangles, then cells.
-struct SimplexIds {
-  std::size_t edges, triangles, cells, end;
-  SimplexIds(const Triangulation& t, const Simplices& s)
-      : edges(t.num_points()), triangles(edges + s.num_edges()), cells(triangles + s.num_triangles()),
-        end(cells + t.num_cells()) {}
-};
 
 Simplex cell_simplex(const Triangulation& t, Index c) {
   const auto& v = t.cell(c).v;
@@ -53,35 +46,30 @@ SizeKernel AlphaComplex::size_kernel() const {
 
 AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   const Simplices& s = simplices_;
-  const SimplexIds ids(t, s);
+  ids_ = {Index(t.num_points()), Index(t.num_points() + s.num_edges()),
+          Index(t.num_points() + s.num_edges() + s.num_triangles())};
+  if (std::size_t(ids_.cells) + t.num_cells() >= kNever) fail("too many simplices for 32-bit ids");
+  const std::size_t num_ids = ids_.cells + t.num_cells();
   SizeKernel sizes = size_kernel();
-  auto simplex_of = [&](std::size_t g) -> Simplex {
-    if (g < ids.edges) return Simplex(Index(g));
-    if (g < ids.triangles) return Simplex(s.edge(Index(g - ids.edges))[0], s.edge(Index(g - ids.edges))[1]);
-    if (g < ids.cells) {
-      const auto& f = s.triangle(Index(g - ids.triangles));
-      return Simplex(f[0], f[1], f[2]);
-    }
-    return cell_simplex(t, Index(g - ids.cells));
-  };
+  auto simplex_of = [&](Index g) { return simplex(g); };
 
   // Top-down interval records, first as global ids of the simplices whose
   // sizes bound them; translated to ranks once the sizes are sorted.
-  constexpr std::size_t kInf = std::size_t(-1);
-  std::vector<Size> size_of(ids.end);  // lazily filled; {0, 0} also means "not yet"
-  auto size = [&](std::size_t g) -> const Size& {
+  constexpr Index kInf = kNever;
+  std::vector<Size> size_of(num_ids);  // lazily filled; {0, 0} also means "not yet"
+  auto size = [&](Index g) -> const Size& {
     if (size_of[g].error == 0 && size_of[g].value == 0) size_of[g] = sizes.size(simplex_of(g));
     return size_of[g];
   };
-  auto less = [&](std::size_t a, std::size_t b) {  // exact, kInf last
+  auto less = [&](Index a, Index b) {  // exact, kInf last
     if (a == b) return false;
     if (a == kInf || b == kInf) return b == kInf;
     return sizes.compare(simplex_of(a), size(a), simplex_of(b), size(b)) < 0;
   };
-  auto min_of = [&](std::size_t a, std::size_t b) { return less(b, a) ? b : a; };
-  auto max_of = [&](std::size_t a, std::size_t b) { return (a == kInf || b == kInf) ? kInf : less(a, b) ? b : a; };
+  auto min_of = [&](Index a, Index b) { return less(b, a) ? b : a; };
+  auto max_of = [&](Index a, Index b) { return (a == kInf || b == kInf) ? kInf : less(a, b) ? b : a; };
   struct Record {
-    std::size_t entry = kInf, low = kInf, high = kInf;
+    Index entry = kInf, low = kInf, high = kInf;
     bool attached = false;
   };
   std::vector<Record> tri(s.num_triangles()), edg(s.num_edges()), ver(t.num_points());
@@ -95,7 +83,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
         hull = true;
         continue;
       }
-      const std::size_t g = ids.cells + c;
+      const Index g = ids_.cells + c;
       r.low = min_of(r.low, g);
       r.high = first ? g : max_of(r.high, g);
       first = false;
@@ -104,7 +92,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
       r.attached = r.attached || sizes.attached(sf, q);
     }
     if (hull) r.high = kInf;
-    r.entry = r.attached ? r.low : ids.triangles + f;
+    r.entry = r.attached ? r.low : ids_.triangles + f;
   }
   for (Index e = 0; e < s.num_edges(); ++e) {
     const auto& ev = s.edge(e);
@@ -119,7 +107,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
       const Index q = fv[0] + fv[1] + fv[2] - ev[0] - ev[1];
       r.attached = r.attached || sizes.attached(se, q);
     }
-    r.entry = r.attached ? r.low : ids.edges + e;
+    r.entry = r.attached ? r.low : ids_.edges + e;
   }
   for (Index v = 0; v < t.num_points(); ++v) {
     if (t.status(v) != PointStatus::vertex) continue;
@@ -137,21 +125,21 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
 
   // The spectrum: sort the referenced sizes by their double value, then
   // exactly within runs of overlapping error intervals.
-  std::vector<char> critical(ids.end, 0);
-  auto mark = [&](std::size_t g) {
+  std::vector<char> critical(num_ids, 0);
+  auto mark = [&](Index g) {
     if (g != kInf) critical[g] = 1;
   };
   for (const auto* records : {&tri, &edg, &ver})
     for (const Record& r : *records) mark(r.entry), mark(r.low), mark(r.high);
   for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) mark(ids.cells + c);
-  std::vector<std::size_t> order;
-  for (std::size_t g = 0; g < ids.end; ++g)
+    if (!t.is_infinite(c)) mark(ids_.cells + c);
+  std::vector<Index> order;
+  for (Index g = 0; g < num_ids; ++g)
     if (critical[g]) order.push_back(g);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
     return std::tie(size(a).value, a) < std::tie(size(b).value, b);
   });
-  std::vector<Index> rank_of(ids.end, kNever);
+  std::vector<Index> rank_of(num_ids, kNever);
   for (std::size_t b = 0; b < order.size();) {
     std::size_t e = b + 1;
     double reach = size(order[b]).value + size(order[b]).error;
@@ -159,14 +147,14 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
       reach = std::max(reach, size(order[e]).value + size(order[e]).error), ++e;
     if (e - b > 1) std::stable_sort(order.begin() + b, order.begin() + e, less);
     for (std::size_t k = b; k < e; ++k) {
-      if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(simplex_of(order[k]));
+      if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(order[k]);
       rank_of[order[k]] = Index(spectrum_.size() - 1);
     }
     b = e;
   }
 
   auto to_interval = [&](const Record& r) {
-    auto rk = [&](std::size_t g) { return g == kInf ? kNever : rank_of[g]; };
+    auto rk = [&](Index g) { return g == kInf ? kNever : rank_of[g]; };
     return Interval{rk(r.entry), rk(r.low), rk(r.high), r.attached};
   };
   std::transform(ver.begin(), ver.end(), std::back_inserter(vertex_), to_interval);
@@ -174,12 +162,23 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   std::transform(tri.begin(), tri.end(), std::back_inserter(triangle_), to_interval);
   cell_.resize(t.num_cells(), kNever);
   for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) cell_[c] = rank_of[ids.cells + c];
+    if (!t.is_infinite(c)) cell_[c] = rank_of[ids_.cells + c];
   size_stats_ = sizes.stats();
   pairs_ = persistence_pairs(t, s, filtration());
 }
 
-double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rounded_size(spectrum_[rank]); }
+Simplex AlphaComplex::simplex(Index g) const {
+  const Simplices& s = simplices_;
+  if (g < ids_.edges) return Simplex(g);
+  if (g < ids_.triangles) return Simplex(s.edge(g - ids_.edges)[0], s.edge(g - ids_.edges)[1]);
+  if (g < ids_.cells) {
+    const auto& f = s.triangle(g - ids_.triangles);
+    return Simplex(f[0], f[1], f[2]);
+  }
+  return cell_simplex(*t_, g - ids_.cells);
+}
+
+double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rounded_size(simplex(spectrum_[rank])); }
 
 Index AlphaComplex::level(double alpha_sq) const {
   SizeKernel sizes = size_kernel();
@@ -187,7 +186,7 @@ Index AlphaComplex::level(double alpha_sq) const {
   Index lo = 0, hi = Index(spectrum_.size());
   while (lo < hi) {
     const Index mid = lo + (hi - lo) / 2;
-    if (sizes.compare(spectrum_[mid], alpha_sq) <= 0) lo = mid + 1;
+    if (sizes.compare(simplex(spectrum_[mid]), alpha_sq) <= 0) lo = mid + 1;
     else hi = mid;
   }
   return lo;

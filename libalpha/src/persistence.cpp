@@ -28,7 +28,7 @@ using Key = std::tuple<Index, int, Index>;
 }  // namespace
 
 std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Simplices& s,
-                                               const FiltrationRanks& r) {
+                                               const FiltrationRanks& r, bool keep_zero_length) {
   std::vector<PersistencePair> pairs;
   const std::size_t ne = s.num_edges(), nf = s.num_triangles();
 
@@ -108,6 +108,8 @@ std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Sim
   for (Index e = 0; e < ne; ++e)
     if (edge_creates_cycle[e] == 1) pairs.push_back({1, r.edge[e], kNever, e, kNone});
 
+  if (!keep_zero_length)
+    std::erase_if(pairs, [](const PersistencePair& p) { return p.birth == p.death; });
   std::sort(pairs.begin(), pairs.end(), [](const PersistencePair& a, const PersistencePair& b) {
     return std::tie(a.dim, a.birth, a.death, a.birth_simplex) < std::tie(b.dim, b.birth, b.death, b.birth_simplex);
   });

@@ -71,7 +71,8 @@ public:
   }
   ClassCounts counts(Index level) const;
 
-  // Filtration by entry rank, and its persistence pairs (ranks).
+  // Filtration by entry rank, and its persistence pairs (ranks) of
+  // positive length.
   FiltrationRanks filtration() const;
   const std::vector<PersistencePair>& persistence() const { return pairs_; }
   std::array<std::size_t, 3> betti(Index level) const;
@@ -90,11 +91,16 @@ private:
   Simplices simplices_;
   std::vector<Interval> vertex_, edge_, triangle_;
   std::vector<Index> cell_;       // entry rank of each cell
-  std::vector<Simplex> spectrum_;  // a simplex realizing each critical value
+  // Global simplex ids: vertices, then edges from ids_.edges, triangles, cells.
+  struct {
+    Index edges = 0, triangles = 0, cells = 0;
+  } ids_;
+  std::vector<Index> spectrum_;  // global id of a simplex realizing each critical value
   std::vector<PersistencePair> pairs_;
   SizeStats size_stats_;
 
   SizeKernel size_kernel() const;
+  Simplex simplex(Index global_id) const;
 };
 
 }  // namespace alpha

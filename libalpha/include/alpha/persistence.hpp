@@ -32,10 +32,10 @@ struct PersistencePair {
   Index death_simplex;   // id of the killing simplex (dimension dim+1), or kNone
 };
 
-// All pairs, including zero-length ones (birth == death), sorted by
-// (dim, birth, death).
+// The pairs sorted by (dim, birth, death), with or without the zero-length
+// ones (birth == death: they never change a Betti number).
 std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Simplices& s,
-                                               const FiltrationRanks& ranks);
+                                               const FiltrationRanks& ranks, bool keep_zero_length = false);
 
 // Betti numbers b0, b1, b2 of the sub-complex of simplices with rank <= r.
 std::array<std::size_t, 3> betti_at(const std::vector<PersistencePair>& pairs, Index r);
