@@ -38,30 +38,27 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 }
 
 int filtered_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
-  double r[4][4];
-  double mx = 0, my = 0, mz = 0, mh = 0;
-  for (int i = 0; i < 4; ++i) {
-    const double x = q[i]->x - p.x, y = q[i]->y - p.y, z = q[i]->z - p.z;
-    const double dw = w[i] - wp;
-    const double s = x * x + y * y + z * z;
-    r[i][0] = x, r[i][1] = y, r[i][2] = z, r[i][3] = s - dw;
-    mx = std::max(mx, std::fabs(x));
-    my = std::max(my, std::fabs(y));
-    mz = std::max(mz, std::fabs(z));
-    mh = std::max(mh, s + std::fabs(dw));
-  }
+  // Written out row by row: this is the hottest function of the construction.
+  const double x0 = q[0]->x - p.x, y0 = q[0]->y - p.y, z0 = q[0]->z - p.z, d0 = w[0] - wp;
+  const double x1 = q[1]->x - p.x, y1 = q[1]->y - p.y, z1 = q[1]->z - p.z, d1 = w[1] - wp;
+  const double x2 = q[2]->x - p.x, y2 = q[2]->y - p.y, z2 = q[2]->z - p.z, d2 = w[2] - wp;
+  const double x3 = q[3]->x - p.x, y3 = q[3]->y - p.y, z3 = q[3]->z - p.z, d3 = w[3] - wp;
+  const double s0 = x0 * x0 + y0 * y0 + z0 * z0, s1 = x1 * x1 + y1 * y1 + z1 * z1;
+  const double s2 = x2 * x2 + y2 * y2 + z2 * z2, s3 = x3 * x3 + y3 * y3 + z3 * z3;
+  const double h0 = s0 - d0, h1 = s1 - d1, h2 = s2 - d2, h3 = s3 - d3;
   // 2x2 minors of the xy columns, then 3x3 minors with z, then along h.
-  auto m2 = [&](int i, int j) { return r[i][0] * r[j][1] - r[j][0] * r[i][1]; };
-  const double m01 = m2(0, 1), m02 = m2(0, 2), m03 = m2(0, 3), m12 = m2(1, 2), m13 = m2(1, 3),
-               m23 = m2(2, 3);
-  const double m012 = r[0][2] * m12 - r[1][2] * m02 + r[2][2] * m01;
-  const double m013 = r[0][2] * m13 - r[1][2] * m03 + r[3][2] * m01;
-  const double m023 = r[0][2] * m23 - r[2][2] * m03 + r[3][2] * m02;
-  const double m123 = r[1][2] * m23 - r[2][2] * m13 + r[3][2] * m12;
-  const double det = -r[0][3] * m123 + r[1][3] * m023 - r[2][3] * m013 + r[3][3] * m012;
-  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz) ||
-      !in_filter_range(mh))
-    return 2;
+  const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
+  const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
+  const double m012 = z0 * m12 - z1 * m02 + z2 * m01;
+  const double m013 = z0 * m13 - z1 * m03 + z3 * m01;
+  const double m023 = z0 * m23 - z2 * m03 + z3 * m02;
+  const double m123 = z1 * m23 - z2 * m13 + z3 * m12;
+  const double det = (h3 * m012 - h2 * m013) + (h1 * m023 - h0 * m123);
+  const double mx = std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(x2), std::fabs(x3)));
+  const double my = std::max(std::max(std::fabs(y0), std::fabs(y1)), std::max(std::fabs(y2), std::fabs(y3)));
+  const double mz = std::max(std::max(std::fabs(z0), std::fabs(z1)), std::max(std::fabs(z2), std::fabs(z3)));
+  const double mh = std::max(std::max(s0 + std::fabs(d0), s1 + std::fabs(d1)), std::max(s2 + std::fabs(d2), s3 + std::fabs(d3)));
+  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz) || !in_filter_range(mh)) return 2;
   const double eps = kPowerBound * mx * my * mz * mh;
   if (det > eps) return 1;
   if (det < -eps) return -1;

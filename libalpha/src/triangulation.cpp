@@ -69,12 +69,17 @@ private:
     Index outside;           // the neighbour that stays
     int mirror;              // its local index of the conflict cell
   };
-  struct EdgeSlot {
+  struct EdgeSlot {  // cavity edge table entry; key 0: empty
     std::uint64_t key;
     Index cell;
     int facet;
-    std::uint32_t stamp;
   };
+  static constexpr std::uint64_t kUsedEdge = ~0ull;
+  // kOthers[i][j]: the two local indices other than i and j.
+  static constexpr int kOthers[4][4][2] = {{{-1, -1}, {2, 3}, {1, 3}, {1, 2}},
+                                           {{2, 3}, {-1, -1}, {0, 3}, {0, 2}},
+                                           {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
+                                           {{1, 2}, {0, 2}, {0, 1}, {-1, -1}}};
 
   Triangulation& t_;
   Kernel kernel_;
@@ -84,7 +89,7 @@ private:
   std::vector<Index> free_cells_, conflict_, stack_;
   std::vector<Facet> boundary_;
   std::vector<EdgeSlot> edges_;
-  std::uint32_t edge_stamp_ = 0;
+  std::vector<std::size_t> used_slots_;
   std::vector<std::uint32_t> vertex_mark_;
   std::vector<Index> cavity_vertices_;
   std::uint32_t walk_rng_ = 0x9e3779b9u;
@@ -261,9 +266,9 @@ private:
   Index fill_cavity() {
     for (Index c : conflict_) free_cells_.push_back(c);
     const std::size_t slots = std::bit_ceil(4 * boundary_.size() + 16);
-    if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0, 0}), edge_stamp_ = 0;
-    ++edge_stamp_;
+    if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0});
     const std::size_t mask = edges_.size() - 1;
+    used_slots_.clear();
     Index made = kNone;
     for (const Facet& f : boundary_) {
       Index c;
@@ -283,23 +288,23 @@ private:
       // the cell sharing that edge is the neighbour.
       for (int j = 0; j < 4; ++j) {
         if (j == f.i) continue;
-        Index a = kNone, b = kNone;
-        for (int k = 0; k < 4; ++k)
-          if (k != j && k != f.i) (a == kNone ? a : b) = f.v[k];
-        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-        std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 20 & mask;
-        while (edges_[h].stamp == edge_stamp_ && edges_[h].key != key) h = (h + 1) & mask;
+        const Index a = f.v[kOthers[f.i][j][0]], b = f.v[kOthers[f.i][j][1]];
+        const std::uint64_t key = a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+        std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 40 & mask;
+        while (edges_[h].key != 0 && edges_[h].key != key) h = (h + 1) & mask;
         EdgeSlot& slot = edges_[h];
-        if (slot.stamp == edge_stamp_) {
+        if (slot.key == key) {
           cells_[c].n[j] = slot.cell;
           cells_[slot.cell].n[slot.facet] = c;
-          slot.key = ~0ull;  // each edge is shared by exactly two new cells
+          slot.key = kUsedEdge;  // each edge is shared by exactly two new cells
         } else {
-          slot = {key, c, j, edge_stamp_};
+          slot = {key, c, j};
+          used_slots_.push_back(h);
         }
       }
       made = c;
     }
+    for (std::size_t h : used_slots_) edges_[h].key = 0;
     return made;
   }
 
