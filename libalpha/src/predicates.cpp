@@ -37,12 +37,15 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   return 2;
 }
 
+// Written out row by row: this is the hottest function of the construction,
+// and the unweighted instance drops the weight terms at compile time.
+template <bool kWeighted>
 int filtered_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
-  // Written out row by row: this is the hottest function of the construction.
-  const double x0 = q[0]->x - p.x, y0 = q[0]->y - p.y, z0 = q[0]->z - p.z, d0 = w[0] - wp;
-  const double x1 = q[1]->x - p.x, y1 = q[1]->y - p.y, z1 = q[1]->z - p.z, d1 = w[1] - wp;
-  const double x2 = q[2]->x - p.x, y2 = q[2]->y - p.y, z2 = q[2]->z - p.z, d2 = w[2] - wp;
-  const double x3 = q[3]->x - p.x, y3 = q[3]->y - p.y, z3 = q[3]->z - p.z, d3 = w[3] - wp;
+  auto dw = [&](int i) { return kWeighted ? w[i] - wp : 0.0; };
+  const double x0 = q[0]->x - p.x, y0 = q[0]->y - p.y, z0 = q[0]->z - p.z, d0 = dw(0);
+  const double x1 = q[1]->x - p.x, y1 = q[1]->y - p.y, z1 = q[1]->z - p.z, d1 = dw(1);
+  const double x2 = q[2]->x - p.x, y2 = q[2]->y - p.y, z2 = q[2]->z - p.z, d2 = dw(2);
+  const double x3 = q[3]->x - p.x, y3 = q[3]->y - p.y, z3 = q[3]->z - p.z, d3 = dw(3);
   const double s0 = x0 * x0 + y0 * y0 + z0 * z0, s1 = x1 * x1 + y1 * y1 + z1 * z1;
   const double s2 = x2 * x2 + y2 * y2 + z2 * z2, s3 = x3 * x3 + y3 * y3 + z3 * z3;
   const double h0 = s0 - d0, h1 = s1 - d1, h2 = s2 - d2, h3 = s3 - d3;
@@ -84,7 +87,7 @@ int Kernel::orient3d(Index a, Index b, Index c, Index d) {
 
 int Kernel::power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p, double wp,
                            bool& filtered) {
-  const int s = filtered_power_det(q, wq, p, wp);
+  const int s = w_ ? filtered_power_det<true>(q, wq, p, wp) : filtered_power_det<false>(q, wq, p, wp);
   filtered = s != 2;
   return filtered ? s : exact::power_det(q, wq, p, wp);
 }

@@ -74,21 +74,20 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<
 
 std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> order,
                               std::uint64_t seed) {
+  // Keys first, while the points are read in order (cache friendly), then
+  // shuffle the (key, index) pairs.
+  const std::vector<std::uint64_t> keys = hilbert_keys(points, order);
+  std::vector<std::pair<std::uint64_t, Index>> items(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) items[i] = {keys[i], order[i]};
   SplitMix64 rng{seed};
-  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.next() % i]);
+  for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[rng.next() % i]);
   // Rounds [n/8^(k+1), n/8^k): the first few points form the coarsest round.
-  std::vector<std::size_t> cuts{order.size()};
+  std::vector<std::size_t> cuts{items.size()};
   while (cuts.back() > 256) cuts.push_back(cuts.back() / 8);
   cuts.push_back(0);
-  const std::vector<std::uint64_t> keys = hilbert_keys(points, order);
-  std::vector<std::pair<std::uint64_t, Index>> round;
-  for (std::size_t r = cuts.size() - 1; r > 0; --r) {
-    const std::size_t b = cuts[r], e = cuts[r - 1];
-    round.clear();
-    for (std::size_t i = b; i < e; ++i) round.emplace_back(keys[i], order[i]);
-    std::sort(round.begin(), round.end());
-    for (std::size_t i = b; i < e; ++i) order[i] = round[i - b].second;
-  }
+  for (std::size_t r = cuts.size() - 1; r > 0; --r)
+    std::sort(items.begin() + std::ptrdiff_t(cuts[r]), items.begin() + std::ptrdiff_t(cuts[r - 1]));
+  for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].second;
   return order;
 }
 
