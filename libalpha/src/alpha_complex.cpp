@@ -56,14 +56,18 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   // Top-down interval records, first as global ids of the simplices whose
   // sizes bound them; translated to ranks once the sizes are sorted.
   constexpr Index kInf = kNever;
-  std::vector<Size> size_of(num_ids);  // lazily filled; {0, 0} also means "not yet"
-  auto size = [&](Index g) -> const Size& {
-    if (size_of[g].error == 0 && size_of[g].value == 0) size_of[g] = sizes.size(simplex_of(g));
-    return size_of[g];
-  };
+  // Filtered sizes of all simplices, computed in id order (cells, and the
+  // edges and triangles numbered by cell, are stored in spatial order).
+  std::vector<Size> size_of(num_ids);
+  for (Index g = 0; g < num_ids; ++g)
+    if (g < ids_.cells || !t.is_infinite(g - ids_.cells)) size_of[g] = sizes.size(simplex_of(g));
+  auto size = [&](Index g) -> const Size& { return size_of[g]; };
+  std::uint64_t filtered_compares = 0;
   auto less = [&](Index a, Index b) {  // exact, kInf last
     if (a == b) return false;
     if (a == kInf || b == kInf) return b == kInf;
+    const int f = compare_filtered(size(a), size(b));  // decides almost always
+    if (f != kUndecided) return ++filtered_compares, f < 0;
     return sizes.compare(simplex_of(a), size(a), simplex_of(b), size(b)) < 0;
   };
   auto min_of = [&](Index a, Index b) { return less(b, a) ? b : a; };
@@ -133,12 +137,13 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
     for (const Record& r : *records) mark(r.entry), mark(r.low), mark(r.high);
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) mark(ids_.cells + c);
-  std::vector<Index> order;
+  std::vector<std::pair<double, Index>> by_value;
   for (Index g = 0; g < num_ids; ++g)
-    if (critical[g]) order.push_back(g);
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return std::tie(size(a).value, a) < std::tie(size(b).value, b);
-  });
+    if (critical[g]) by_value.emplace_back(size(g).value, g);
+  std::sort(by_value.begin(), by_value.end());
+  std::vector<Index> order(by_value.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = by_value[k].second;
+  by_value = {};
   std::vector<Index> rank_of(num_ids, kNever);
   for (std::size_t b = 0; b < order.size();) {
     std::size_t e = b + 1;
@@ -164,6 +169,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) cell_[c] = rank_of[ids_.cells + c];
   size_stats_ = sizes.stats();
+  size_stats_.compare.filtered += filtered_compares;
   pairs_ = persistence_pairs(t, s, filtration());
 }
 
