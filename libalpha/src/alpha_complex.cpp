@@ -77,6 +77,13 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
     bool attached = false;
   };
   std::vector<Record> tri(s.num_triangles()), edg(s.num_edges()), ver(t.num_points());
+  // A face stops being singular when its first coface enters, and becomes
+  // interior with its last one.
+  auto absorb = [&](Record& r, const Record& coface, bool& first) {
+    r.low = first ? coface.entry : min_of(r.low, coface.entry);
+    r.high = first ? coface.high : max_of(r.high, coface.high);
+    first = false;
+  };
 
   for (Index f = 0; f < s.num_triangles(); ++f) {
     const Simplex sf(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]);
@@ -104,9 +111,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
     Record& r = edg[e];
     bool first = true;
     for (Index f : s.edge_triangles(e)) {
-      r.low = first ? tri[f].entry : min_of(r.low, tri[f].entry);
-      r.high = first ? tri[f].high : max_of(r.high, tri[f].high);
-      first = false;
+      absorb(r, tri[f], first);
       const auto& fv = s.triangle(f);
       const Index q = fv[0] + fv[1] + fv[2] - ev[0] - ev[1];
       r.attached = r.attached || sizes.attached(se, q);
@@ -118,9 +123,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
     Record& r = ver[v];
     bool first = true;
     for (Index e : s.vertex_edges(v)) {
-      r.low = first ? edg[e].entry : min_of(r.low, edg[e].entry);
-      r.high = first ? edg[e].high : max_of(r.high, edg[e].high);
-      first = false;
+      absorb(r, edg[e], first);
       const Index q = s.edge(e)[0] == v ? s.edge(e)[1] : s.edge(e)[0];
       r.attached = r.attached || sizes.attached(Simplex(v), q);
     }

@@ -81,6 +81,13 @@ int Kernel::orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return e;
 }
 
+Vec3 Kernel::axis_offset(const Vec3& a, int axis) {
+  Vec3 d = a;
+  double& x = axis == 0 ? d.x : axis == 1 ? d.y : d.z;
+  x = x != 0 ? 2 * x : 1.0;  // exact: doubling, or a fresh 1
+  return d;
+}
+
 int Kernel::orient3d(Index a, Index b, Index c, Index d) {
   return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]);
 }
@@ -111,9 +118,7 @@ bool Kernel::perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3&
   return true;  // p has the largest remaining perturbation: its weight wins
 }
 
-bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
-  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
-  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
+bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
   bool filtered;
   const int s = power_det_sign(q, wq, pts_[p], weight(p), filtered);
   if (s != 0) {
@@ -121,8 +126,14 @@ bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
     return s < 0;
   }
   ++stats_.power.perturbed;
-  const Index id[4] = {a, b, c, d};
   return perturbed_conflict(q, id, pts_[p], p);
+}
+
+bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
+  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
+  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
+  const Index id[4] = {a, b, c, d};
+  return cell_conflict(q, wq, id, p);
 }
 
 bool Kernel::hull_conflict(Index a, Index b, Index c, Index p) {
@@ -136,23 +147,14 @@ bool Kernel::hull_conflict(Index a, Index b, Index c, Index p) {
   Vec3 d = pa;
   int od = 0;
   for (int axis = 0; axis < 3 && od == 0; ++axis) {
-    d = pa;
-    double& x = axis == 0 ? d.x : axis == 1 ? d.y : d.z;
-    x = x != 0 ? 2 * x : 1.0;
+    d = axis_offset(pa, axis);
     od = orient3d(pts_[a], pts_[b], pts_[c], d);
   }
   const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &d};
   Index id[4] = {a, b, c, kNone};  // d is virtual: never perturbed
   if (od < 0) std::swap(q[0], q[1]), std::swap(id[0], id[1]);
   const double wq[4] = {weight(id[0]), weight(id[1]), weight(c), weight(a)};
-  bool filtered;
-  const int s = power_det_sign(q, wq, pts_[p], weight(p), filtered);
-  if (s != 0) {
-    ++(filtered ? stats_.power.filtered : stats_.power.exact);
-    return s < 0;
-  }
-  ++stats_.power.perturbed;
-  return perturbed_conflict(q, id, pts_[p], p);
+  return cell_conflict(q, wq, id, p);
 }
 
 int Kernel::power_side_exact(Index a, Index b, Index c, Index d, Index p) {

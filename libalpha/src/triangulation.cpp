@@ -140,12 +140,9 @@ private:
   }
 
   bool collinear(Index a, Index b, Index c) {
-    for (int axis = 0; axis < 3; ++axis) {
-      Vec3 d = t_.points_[a];
-      double& x = axis == 0 ? d.x : axis == 1 ? d.y : d.z;
-      x = x != 0 ? 2 * x : 1.0;
-      if (kernel_.orient3d(t_.points_[a], t_.points_[b], t_.points_[c], d) != 0) return false;
-    }
+    for (int axis = 0; axis < 3; ++axis)
+      if (kernel_.orient3d(t_.points_[a], t_.points_[b], t_.points_[c], Kernel::axis_offset(t_.points_[a], axis)) != 0)
+        return false;
     return true;
   }
 

@@ -64,6 +64,10 @@ public:
   // 0 on the orthosphere, -1 outside.
   int power_side_exact(Index a, Index b, Index c, Index d, Index p);
 
+  // a moved along one axis by an exactly representable nonzero step: with
+  // orient3d(a,b,c,axis_offset(a,k)) for k = 0,1,2 all zero, a,b,c are collinear.
+  static Vec3 axis_offset(const Vec3& a, int axis);
+
   const PredicateStats& stats() const { return stats_; }
 
 private:
@@ -75,6 +79,8 @@ private:
   // Unperturbed sign of the lifted determinant; conflict when negative.
   int power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p,
                      double wp, bool& filtered);
+  // Filter, exact, then perturbed conflict test of a positive cell q.
+  bool cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   bool perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p,
                           Index pid);
 };
