@@ -2,47 +2,29 @@
 //
 // Builds the Delaunay (or, with --weighted, the regular) triangulation of a
 // point file or of the atoms of a structure file and reports its size.
-#include <chrono>
 #include <cstdio>
 #include <memory>
-#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <sys/resource.h>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "alpha/error.hpp"
 #include "alpha/simplices.hpp"
 #include "alpha/triangulation.hpp"
 #include "alpha/validation.hpp"
 #include "commands.hpp"
-#include "point_file.hpp"
-#include "structure_file.hpp"
+#include "common.hpp"
 
 namespace alphapocket {
 namespace {
 
-// Radius given to every atom of a structure file with --weighted, until a
-// molecule layer assigns radii per element.
-constexpr double kDefaultAtomRadius = 1.8;
-
 struct DelaunayOptions {
-  std::string file;
-  bool weighted = false;
+  InputOptions input;
   bool check = false;
   bool json = false;
-};
-
-class Stopwatch {
-public:
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
-private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 std::string mib(std::size_t bytes) {
@@ -63,31 +45,12 @@ std::size_t peak_rss_bytes() {
   return std::size_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
 }
 
-PointSet read_input(const DelaunayOptions& opt) {
-  if (!is_structure_file(opt.file)) return read_point_file(opt.file, opt.weighted);
-  PointSet set;
-  set.points = read_structure_atoms(opt.file);
-  if (opt.weighted) set.weights.assign(set.points.size(), kDefaultAtomRadius * kDefaultAtomRadius);
-  return set;
-}
-
 int run_delaunay(const DelaunayOptions& opt) {
-  Stopwatch read_time;
-  PointSet input = read_input(opt);
+  PointSet input = read_input(opt.input);
   const std::size_t n = input.points.size();
-  spdlog::info("read {} {}points from {} in {:.3f} s", n, opt.weighted ? "weighted " : "", opt.file,
-               read_time.seconds());
 
   Stopwatch build_time;
-  // Library errors (too few distinct points, all coplanar, ...) are about
-  // this input: name the file.
-  auto tri = [&] {
-    try {
-      return std::make_unique<alpha::Triangulation>(std::move(input.points), std::move(input.weights));
-    } catch (const alpha::Error& e) {
-      throw std::runtime_error(opt.file + ": " + e.what());
-    }
-  }();
+  const auto tri = triangulate(std::move(input), opt.input.file);
   const alpha::Triangulation& t = *tri;
   const double build_s = build_time.seconds();
 
@@ -127,14 +90,14 @@ int run_delaunay(const DelaunayOptions& opt) {
     if (opt.check) j["valid"] = valid;
     std::printf("%s\n", j.dump().c_str());
   } else {
-    std::printf("%s: %zu points, %zu vertices (%zu duplicates, %zu hidden)\n", opt.file.c_str(), n,
+    std::printf("%s: %zu points, %zu vertices (%zu duplicates, %zu hidden)\n", opt.input.file.c_str(), n,
                 t.num_vertices(), t.num_duplicates(), t.num_hidden());
     std::printf("%s triangulation: %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra\n",
                 t.weighted() ? "regular" : "Delaunay", s.num_edges(), s.num_triangles(),
                 s.num_hull_triangles(), t.num_finite_cells());
     if (opt.check) std::printf("valid: %s\n", valid ? "yes" : "NO");
   }
-  if (std::fflush(stdout) != 0) throw std::runtime_error("cannot write to standard output");
+  flush_stdout();
   return valid ? 0 : 1;
 }
 
@@ -143,13 +106,7 @@ int run_delaunay(const DelaunayOptions& opt) {
 Subcommand add_delaunay_command(CLI::App& app) {
   auto opt = std::make_shared<DelaunayOptions>();
   CLI::App* sub = app.add_subcommand("delaunay", "Build the Delaunay (or regular) triangulation of a point or structure file");
-  sub->add_option("FILE", opt->file,
-                  "Point file (x y z per line; x y z r with --weighted) or structure file "
-                  "(.pdb .ent .cif .mmcif, optionally .gz: all atoms of the first model)")
-      ->required();
-  sub->add_flag("--weighted", opt->weighted,
-                "Weighted points: read a radius r per point (weight r^2); for structure files every atom "
-                "gets r = 1.8 A");
+  add_input_options(*sub, opt->input);
   sub->add_flag("--check", opt->check, "Verify the triangulation exactly; exit code 1 if it is invalid");
   sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
   return {sub, [opt] { return run_delaunay(*opt); }};

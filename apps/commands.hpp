@@ -15,5 +15,8 @@ struct Subcommand {
 };
 
 Subcommand add_delaunay_command(CLI::App& app);
+Subcommand add_spectrum_command(CLI::App& app);
+Subcommand add_persistence_command(CLI::App& app);
+Subcommand add_shape_command(CLI::App& app);
 
 }  // namespace alphapocket

@@ -1,5 +1,6 @@
 // alphapocket: one executable, one subcommand per file (cmd_*.cpp).
 // Machine output goes to stdout; logs (spdlog) and errors go to stderr.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -28,12 +29,20 @@ int run(int argc, char** argv) {
 
   std::vector<alphapocket::Subcommand> commands;
   commands.push_back(alphapocket::add_delaunay_command(app));
+  commands.push_back(alphapocket::add_spectrum_command(app));
+  commands.push_back(alphapocket::add_persistence_command(app));
+  commands.push_back(alphapocket::add_shape_command(app));
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; a usage error exits 2, as usual for tools.
-    return app.exit(e) == 0 ? 0 : 2;
+    // --help and --version print to stdout and exit 0; a usage error is one
+    // ERROR line like every other error, and exits 2, as usual for tools.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::fprintf(stderr, "ERROR: %s (see --help)\n", message.c_str());
+    return 2;
   }
 
   auto logger = spdlog::stderr_color_mt("alphapocket");

@@ -1,72 +1,20 @@
 #!/usr/bin/env bash
 # CLI tests of `alphapocket delaunay`, one case per CTest test.
 # Usage: delaunay.sh ALPHAPOCKET REPO_ROOT CASE
-# Needs only bash, grep and coreutils (no python, no jq): a fresh Debian 12
-# machine has them.
 set -euo pipefail
 
-exe=$1
-root=$2
-case_name=$3
-data=$root/tests/data
-pdb=$root/examples/data/1a26A.pdb
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-
-fail() {
-  echo "FAIL [$case_name]: $*" >&2
-  echo "--- stdout:" >&2
-  cat "$tmp/out" >&2 || true
-  echo "--- stderr:" >&2
-  cat "$tmp/err" >&2 || true
-  exit 1
-}
-
-# run ARGS...: runs alphapocket, keeps stdout, stderr and the exit code.
-run() {
-  set +e
-  "$exe" "$@" >"$tmp/out" 2>"$tmp/err"
-  rc=$?
-  set -e
-}
-
-# The JSON value of KEY in stdout (compact, one object on one line).
-json_value() {
-  grep -o "\"$1\":[^,}]*" "$tmp/out" | head -n 1 | cut -d: -f2
-}
-
-expect_json() {  # KEY VALUE
-  local got
-  got=$(json_value "$1")
-  [[ "$got" == "$2" ]] || fail "\"$1\" is '$got', expected '$2'"
-}
-
-# A successful --json run: exit 0, exactly one line on stdout holding one
-# JSON object, and the counts of a triangulated ball: V - E + F - T = 1
-# (Euler characteristic) and 4T = 2F - H (each hull triangle bounds one cell).
+# A successful --json run (one JSON object), with the counts of a
+# triangulated ball: V - E + F - T = 1 (Euler characteristic) and
+# 4T = 2F - H (each hull triangle bounds one cell).
 expect_json_success() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
-  [[ $(wc -l <"$tmp/out") -eq 1 ]] || fail "stdout is not exactly one line"
-  grep -qx '{.*}' "$tmp/out" || fail "stdout is not one JSON object"
+  expect_json_object
   local v e f t h
   v=$(json_value vertices) e=$(json_value edges) f=$(json_value triangles)
   t=$(json_value tetrahedra) h=$(json_value hull_triangles)
   [[ $((v - e + f - t)) -eq 1 ]] || fail "Euler characteristic V-E+F-T = $((v - e + f - t)), expected 1"
   [[ $((4 * t)) -eq $((2 * f - h)) ]] || fail "4T = $((4 * t)) but 2F-H = $((2 * f - h))"
-}
-
-# A failed run: non-zero exit, nothing on stdout, and exactly one line on
-# stderr: "ERROR: " followed by the file name (and more).
-expect_error() {  # FILE [MESSAGE-PATTERN]
-  [[ $rc -ne 0 ]] || fail "exit code 0, expected an error"
-  [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
-  [[ $(wc -l <"$tmp/err") -eq 1 ]] || fail "stderr is not exactly one line"
-  grep -qF "ERROR: $1" "$tmp/err" || fail "stderr does not start with 'ERROR: $1'"
-  [[ $(head -c 7 "$tmp/err") == "ERROR: " ]] || fail "stderr does not start with 'ERROR: '"
-  if [[ $# -ge 2 ]]; then
-    grep -qE "$2" "$tmp/err" || fail "stderr does not match '$2'"
-  fi
 }
 
 case $case_name in
@@ -192,8 +140,8 @@ case $case_name in
     ;;
   usage_error)
     run delaunay
-    [[ $rc -ne 0 ]] || fail "no error without FILE"
-    [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
+    expect_error "FILE is required"
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2 for a wrong command line"
     ;;
   version)
     run --version

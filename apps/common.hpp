@@ -1,0 +1,70 @@
+// What the subcommands share: FILE (a point file or a structure file) and
+// --weighted, the points of FILE, their triangulation and alpha complex,
+// and a few helpers for options and output.
+#pragma once
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/triangulation.hpp"
+#include "point_file.hpp"
+
+namespace alphapocket {
+
+// Radius given to every atom of a structure file with --weighted, until a
+// molecule layer assigns radii per element.
+inline constexpr double kDefaultAtomRadius = 1.8;
+
+struct InputOptions {
+  std::string file;
+  bool weighted = false;
+};
+
+// Adds the positional FILE (required) and the --weighted flag.
+void add_input_options(CLI::App& sub, InputOptions& opt);
+
+// Alpha values on the command line: squared radii, finite (the validator
+// rejects inf and nan), and the convention of which simplices are present.
+inline constexpr const char* kAlphaSqHelp =
+    "alpha is a SQUARED radius (alpha_sq); with --weighted it may be negative (a ball of radius r "
+    "enters at -r^2). A simplex whose value equals alpha_sq counts as present (CGAL's convention).";
+CLI::Validator finite_number();
+
+// The points of a point file, or the atoms of a structure file (with
+// --weighted: radius kDefaultAtomRadius each). Logs what was read.
+PointSet read_input(const InputOptions& opt);
+
+// The triangulation of the points; library errors about the input (too few
+// distinct points, all coplanar, ...) are rethrown naming the file.
+std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file);
+
+// FILE read, triangulated and turned into its alpha complex, with timings
+// logged. The complex refers to the triangulation: keep both together.
+struct AlphaInput {
+  std::size_t points = 0;  // points read
+  std::unique_ptr<alpha::Triangulation> triangulation;
+  std::unique_ptr<alpha::AlphaComplex> complex;
+};
+AlphaInput load_alpha_complex(const InputOptions& opt);
+
+class Stopwatch {
+public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// Flushes stdout; throws when the results could not be written.
+void flush_stdout();
+
+// A value to print: -0 becomes 0 (a critical value of 0 may come out as -0).
+inline double printable(double v) { return v == 0 ? 0.0 : v; }
+
+}  // namespace alphapocket

@@ -1,0 +1,65 @@
+# Shared set-up and helpers of the CLI test scripts, sourced with the
+# script's arguments: source lib.sh ALPHAPOCKET REPO_ROOT CASE.
+# Needs only bash, grep and coreutils (no python, no jq): a fresh Debian 12
+# machine has them.
+
+exe=$1
+root=$2
+case_name=$3
+data=$root/tests/data
+pdb=$root/examples/data/1a26A.pdb
+
+# A scratch directory, removed at the end (made writable first: a case may
+# have locked a directory in it).
+tmp=$(mktemp -d)
+trap 'chmod -R u+rwx "$tmp"; rm -rf "$tmp"' EXIT
+
+fail() {
+  echo "FAIL [$case_name]: $*" >&2
+  echo "--- stdout:" >&2
+  cat "$tmp/out" >&2 || true
+  echo "--- stderr:" >&2
+  cat "$tmp/err" >&2 || true
+  exit 1
+}
+
+# run ARGS...: runs alphapocket, keeps stdout, stderr and the exit code.
+run() {
+  set +e
+  "$exe" "$@" >"$tmp/out" 2>"$tmp/err"
+  rc=$?
+  set -e
+}
+
+# The JSON value of KEY in stdout (compact, one object on one line): the
+# first occurrence.
+json_value() {
+  grep -o "\"$1\":[^,}]*" "$tmp/out" | head -n 1 | cut -d: -f2
+}
+
+expect_json() {  # KEY VALUE
+  local got
+  got=$(json_value "$1")
+  [[ "$got" == "$2" ]] || fail "\"$1\" is '$got', expected '$2'"
+}
+
+# A successful --json run: exit 0 and exactly one line on stdout holding
+# one JSON object.
+expect_json_object() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+  [[ $(wc -l <"$tmp/out") -eq 1 ]] || fail "stdout is not exactly one line"
+  grep -qx '{.*}' "$tmp/out" || fail "stdout is not one JSON object"
+}
+
+# A failed run: non-zero exit, nothing on stdout, and exactly one line on
+# stderr: "ERROR: " followed by the file name (and more).
+expect_error() {  # FILE [MESSAGE-PATTERN]
+  [[ $rc -ne 0 ]] || fail "exit code 0, expected an error"
+  [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
+  [[ $(wc -l <"$tmp/err") -eq 1 ]] || fail "stderr is not exactly one line"
+  grep -qF "ERROR: $1" "$tmp/err" || fail "stderr does not start with 'ERROR: $1'"
+  [[ $(head -c 7 "$tmp/err") == "ERROR: " ]] || fail "stderr does not start with 'ERROR: '"
+  if [[ $# -ge 2 ]]; then
+    grep -qE "$2" "$tmp/err" || fail "stderr does not match '$2'"
+  fi
+}

@@ -1,0 +1,334 @@
+// molecule::write_mesh_file: round trips through OpenMesh's readers (what a
+// viewer such as MeshLab sees), for every format, on alpha shape boundaries.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+
+#include <unistd.h>
+
+// OpenMesh's colour property default-constructs VectorT<unsigned char, 3>
+// without initializing it, which GCC reports where it is instantiated.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
+#include "molecule/mesh_export.hpp"
+#include "point_sets.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using ReadMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// A fresh directory under the system temporary directory, removed at the end.
+class TempDir {
+public:
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "mesh_export_XXXXXX").string();
+    REQUIRE(::mkdtemp(tmpl.data()) != nullptr);
+    path_ = tmpl;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+  // Names of the files in the directory.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+private:
+  fs::path path_;
+};
+
+ReadMesh read_back(const fs::path& file, bool colors = false) {
+  ReadMesh mesh;
+  OpenMesh::IO::Options options;
+  if (colors) {
+    mesh.request_face_colors();
+    options += OpenMesh::IO::Options::FaceColor;
+  }
+  REQUIRE(OpenMesh::IO::read_mesh(mesh, file.string(), options));
+  if (colors) REQUIRE(options.check(OpenMesh::IO::Options::FaceColor));
+  return mesh;
+}
+
+// The faces are closed and consistently oriented: every edge (by vertex
+// positions, so that copies of a vertex count as one) is run through as
+// often in one direction as in the other; for a manifold, once each way.
+bool closed_and_consistent(const ReadMesh& mesh, bool manifold = true) {
+  using Key = std::array<float, 3>;
+  auto key = [&](ReadMesh::VertexHandle v) {
+    const auto& p = mesh.point(v);
+    return Key{p[0], p[1], p[2]};
+  };
+  std::map<std::pair<Key, Key>, int> directed;
+  for (auto f : mesh.faces()) {
+    std::vector<Key> k;
+    for (auto v : f.vertices()) k.push_back(key(v));
+    if (k.size() != 3) return false;
+    for (int i = 0; i < 3; ++i) ++directed[{k[i], k[(i + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    const auto it = directed.find({edge.second, edge.first});
+    if (it == directed.end() || it->second != count || (manifold && count != 1)) return false;
+  }
+  return true;
+}
+
+// Volume enclosed by the mesh (divergence theorem): positive when the faces
+// are oriented outward.
+double signed_volume(const ReadMesh& mesh) {
+  double v = 0;
+  for (auto f : mesh.faces()) {
+    std::vector<OpenMesh::Vec3d> p;
+    for (auto vh : f.vertices()) {
+      const auto& q = mesh.point(vh);
+      p.emplace_back(q[0], q[1], q[2]);
+    }
+    v += OpenMesh::dot(p[0], OpenMesh::cross(p[1], p[2])) / 6;
+  }
+  return v;
+}
+
+molecule::TriangleMesh boundary_mesh(const alpha::AlphaComplex& a, alpha::Index level) {
+  molecule::TriangleMesh m;
+  const auto points = a.triangulation().points();
+  m.points.assign(points.begin(), points.end());
+  m.triangles = a.boundary(level).triangles;
+  return m;
+}
+
+std::size_t used_vertices(const molecule::TriangleMesh& m) {
+  std::vector<char> used(m.points.size(), 0);
+  for (const auto& t : m.triangles)
+    for (auto v : t) used[v] = 1;
+  return std::size_t(std::count(used.begin(), used.end(), 1));
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("mesh export: the 3x3x3 cube of a grid, every format", "[mesh_export]") {
+  const alpha::Triangulation t(testing::grid_points(4));
+  const alpha::AlphaComplex a(t);
+  const alpha::Index level = a.level(0.75);  // all cells: the shape is the cube [0,3]^3
+  REQUIRE(a.volume(level) == Approx(27.0));
+  const molecule::TriangleMesh m = boundary_mesh(a, level);
+  REQUIRE(m.triangles.size() == 108);  // 6 sides x 9 squares x 2 triangles
+  REQUIRE(used_vertices(m) == 56);     // 64 grid points less the 8 inside
+
+  TempDir dir;
+  for (const std::string name : {"cube.ply", "cube.off", "cube.obj", "cube.stl", "CUBE.PLY"}) {
+    CAPTURE(name);
+    const fs::path file = dir / name;
+    const molecule::MeshFileInfo info = molecule::write_mesh_file(file.string(), m);
+    CHECK(info.vertices == 56);
+    CHECK(info.faces == 108);
+    CHECK(info.duplicated_vertices == 0);
+    CHECK_FALSE(info.colors);
+    const ReadMesh back = read_back(file);
+    CHECK(back.n_vertices() == 56);
+    CHECK(back.n_faces() == 108);
+    CHECK(closed_and_consistent(back));
+    CHECK(signed_volume(back) == Approx(a.volume(level)));
+  }
+  CHECK(dir.files() == std::vector<std::string>{"CUBE.PLY", "cube.obj", "cube.off", "cube.ply", "cube.stl"});
+  CHECK(read_text(dir / "cube.ply").rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
+  CHECK(read_text(dir / "cube.off").rfind("OFF\n", 0) == 0);
+}
+
+TEST_CASE("mesh export: random shapes keep orientation and volume", "[mesh_export]") {
+  const alpha::Triangulation t(testing::random_points(300, 7, 10.0));
+  const alpha::AlphaComplex a(t);
+  TempDir dir;
+  std::size_t duplicated = 0;
+  for (const double alpha_sq : {2.0, 4.0, 8.0, 1e6}) {
+    CAPTURE(alpha_sq);
+    const alpha::Index level = a.level(alpha_sq);
+    const molecule::TriangleMesh m = boundary_mesh(a, level);
+    REQUIRE(!m.triangles.empty());
+    for (const std::string name : {"shape.ply", "shape.off", "shape.obj"}) {
+      CAPTURE(name);
+      const fs::path file = dir / name;
+      const molecule::MeshFileInfo info = molecule::write_mesh_file(file.string(), m);
+      CHECK(info.faces == m.triangles.size());
+      duplicated += info.duplicated_vertices;
+      CHECK(info.vertices == used_vertices(m) + info.duplicated_vertices);
+      const ReadMesh back = read_back(file);
+      CHECK(back.n_faces() == m.triangles.size());
+      // The boundary of a union of tetrahedra is closed, whether or not it is a manifold.
+      CHECK(closed_and_consistent(back, false));
+      // Coordinates are stored as floats.
+      CHECK(signed_volume(back) == Approx(a.volume(level)).epsilon(1e-6));
+    }
+  }
+  CHECK(duplicated > 0);  // some shape was not a manifold: that path is covered too
+}
+
+TEST_CASE("mesh export: non-manifold triangles are written with copied vertices", "[mesh_export]") {
+  // Two tetrahedra that share only the vertex 0 (a bow tie).
+  molecule::TriangleMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  auto tetra = [&](alpha::Index a, alpha::Index b, alpha::Index c, alpha::Index d) {
+    // Oriented outward when orient3d(a, b, c, d) > 0.
+    m.triangles.push_back({b, c, d});
+    m.triangles.push_back({a, d, c});
+    m.triangles.push_back({a, b, d});
+    m.triangles.push_back({a, c, b});
+  };
+  tetra(0, 1, 2, 3);
+  tetra(0, 4, 6, 5);
+  TempDir dir;
+  const fs::path file = dir / "bowtie.ply";
+  const molecule::MeshFileInfo info = molecule::write_mesh_file(file.string(), m);
+  CHECK(info.faces == 8);
+  CHECK(info.vertices == 8);  // the shared vertex twice: once per tetrahedron
+  CHECK(info.duplicated_vertices == 1);
+  const ReadMesh back = read_back(file);
+  CHECK(back.n_vertices() == 8);
+  // Points in index order, the copy next to its original.
+  std::vector<std::array<float, 3>> order;
+  for (auto v : back.vertices()) order.push_back({back.point(v)[0], back.point(v)[1], back.point(v)[2]});
+  CHECK(order == std::vector<std::array<float, 3>>{
+                     {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}});
+  CHECK(back.n_faces() == 8);
+  CHECK(closed_and_consistent(back));
+  CHECK(signed_volume(back) == Approx(2.0 / 6));
+}
+
+TEST_CASE("mesh export: any triangle soup is written whole", "[mesh_export]") {
+  // Random triangles on a few points: edges of many triangles, both
+  // orientations, repeated triangles. Nothing may be lost.
+  std::mt19937 rng(11);
+  molecule::TriangleMesh m;
+  for (int i = 0; i < 12; ++i) m.points.push_back({double(i % 3), double(i / 3 % 2), double(i * i % 5)});
+  std::uniform_int_distribution<alpha::Index> pick(0, 11);
+  while (m.triangles.size() < 300) {
+    const alpha::Index a = pick(rng), b = pick(rng), c = pick(rng);
+    if (a != b && b != c && a != c) m.triangles.push_back({a, b, c});
+  }
+  m.triangles.push_back(m.triangles.front());
+  TempDir dir;
+  const fs::path file = dir / "soup.off";
+  const molecule::MeshFileInfo info = molecule::write_mesh_file(file.string(), m);
+  CHECK(info.faces == m.triangles.size());
+  CHECK(info.vertices == 12 + info.duplicated_vertices);
+  const ReadMesh back = read_back(file);
+  CHECK(back.n_faces() == m.triangles.size());
+  CHECK(back.n_vertices() == info.vertices);
+}
+
+TEST_CASE("mesh export: face colours in PLY and OFF", "[mesh_export]") {
+  molecule::TriangleMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 5, 5}};  // the last one unused
+  m.triangles = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  m.face_colors = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {10, 20, 30}};
+  TempDir dir;
+  for (const std::string name : {"colored.ply", "colored.off"}) {
+    CAPTURE(name);
+    const fs::path file = dir / name;
+    const molecule::MeshFileInfo info = molecule::write_mesh_file(file.string(), m);
+    CHECK(info.colors);
+    CHECK(info.vertices == 4);
+    ReadMesh back = read_back(file, true);
+    REQUIRE(back.n_faces() == 4);
+    std::vector<std::array<int, 3>> colors;
+    for (auto f : back.faces()) {
+      const auto c = back.color(f);
+      colors.push_back({int(c[0]), int(c[1]), int(c[2])});
+    }
+    CHECK(colors == std::vector<std::array<int, 3>>{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {10, 20, 30}});
+  }
+  // Formats without face colours still write the mesh, and only that file.
+  for (const std::string name : {"plain.obj", "plain.stl"}) {
+    CAPTURE(name);
+    const molecule::MeshFileInfo info = molecule::write_mesh_file((dir / name).string(), m);
+    CHECK_FALSE(info.colors);
+    CHECK(read_back(dir / name).n_faces() == 4);
+  }
+  CHECK(dir.files() == std::vector<std::string>{"colored.off", "colored.ply", "plain.obj", "plain.stl"});
+}
+
+TEST_CASE("mesh export: errors leave no file behind", "[mesh_export]") {
+  molecule::TriangleMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.triangles = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  TempDir dir;
+  using Catch::Matchers::Contains;
+
+  CHECK_THROWS_WITH(molecule::check_mesh_file_name("shape.vrml"), "shape.vrml: unknown mesh format (expected .ply, .obj, .off or .stl)");
+  CHECK_THROWS_WITH(molecule::check_mesh_file_name("dir.ply/shape"), Contains("unknown mesh format"));
+  CHECK_NOTHROW(molecule::check_mesh_file_name((dir / "shape.Stl").string()));
+  CHECK_NOTHROW(molecule::check_mesh_file_name("shape.obj"));  // in the working directory
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "shape.vrml").string(), m), Contains("unknown mesh format"));
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "shape").string(), m), Contains("unknown mesh format"));
+  const std::string missing = (dir / "missing" / "shape.ply").string();
+  CHECK_THROWS_WITH(molecule::write_mesh_file(missing, m),
+                    missing + ": cannot create a file in " + (dir / "missing").string() + ": No such file or directory");
+  CHECK_THROWS_WITH(molecule::check_mesh_file_name(missing), Contains("No such file or directory"));
+  std::ofstream(dir / "file") << "not a directory\n";
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "file" / "shape.ply").string(), m), Contains("Not a directory"));
+  CHECK_THROWS_WITH(molecule::check_mesh_file_name((dir / "file" / "shape.ply").string()), Contains("Not a directory"));
+  fs::create_directory(dir / "dir.ply");
+  CHECK_THROWS_WITH(molecule::check_mesh_file_name((dir / "dir.ply").string()), Contains("is a directory"));
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "dir.ply").string(), m), Contains("is a directory"));
+
+  molecule::TriangleMesh bad = m;
+  bad.triangles.push_back({0, 1, 4});
+  CHECK_THROWS_AS(molecule::write_mesh_file((dir / "bad.ply").string(), bad), alpha::Error);
+  bad = m;
+  bad.triangles.push_back({0, 1, 1});
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "bad.ply").string(), bad), Contains("repeats a vertex"));
+  bad = m;
+  bad.face_colors.resize(3);
+  CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "bad.ply").string(), bad), Contains("3 face colours for 4"));
+  CHECK(dir.files() == std::vector<std::string>{"dir.ply", "file"});
+
+  if (::geteuid() != 0) {  // root writes anywhere
+    fs::create_directory(dir / "locked");
+    fs::permissions(dir / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    CHECK_THROWS_WITH(molecule::write_mesh_file((dir / "locked" / "shape.ply").string(), m),
+                      Contains("Permission denied"));
+    CHECK_THROWS_WITH(molecule::check_mesh_file_name((dir / "locked" / "shape.ply").string()),
+                      Contains("Permission denied"));
+    CHECK(fs::is_empty(dir / "locked"));
+    fs::permissions(dir / "locked", fs::perms::owner_all);
+  }
+}
+
+TEST_CASE("mesh export: an existing file is replaced whole", "[mesh_export]") {
+  molecule::TriangleMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.triangles = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  TempDir dir;
+  const fs::path file = dir / "shape.off";
+  std::ofstream(file) << "old content that is much longer than the new mesh file will be, "
+                         "so a file that is only overwritten would keep its tail .................\n";
+  molecule::write_mesh_file(file.string(), m);
+  const std::string text = read_text(file);
+  CHECK(text.find("old content") == std::string::npos);
+  CHECK(read_back(file).n_faces() == 4);
+  // An empty mesh is a valid (empty) file.
+  molecule::write_mesh_file(file.string(), molecule::TriangleMesh{});
+  CHECK(read_text(file).rfind("OFF\n0 0 0\n", 0) == 0);
+  CHECK(dir.files() == std::vector<std::string>{"shape.off"});
+}
