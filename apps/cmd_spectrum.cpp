@@ -4,7 +4,9 @@
 // alpha (the smallest critical value at which the shape is one connected
 // component holding every vertex), and at each requested alpha the
 // classification counts, Betti numbers, volume and area of the shape.
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,10 +73,14 @@ int run_spectrum(const SpectrumOptions& opt) {
   const alpha::Triangulation& t = *in.triangulation;
 
   // optimal_level() >= 1: the critical value that completes the shape is
-  // spectrum_value(level - 1). The sample uses the level itself, which the
-  // rounded value might miss by a hair.
+  // critical value number optimal - 1. Users feed the printed value back
+  // through --alpha-sq, so it must reach that level: the nearest double may
+  // lie a hair below the exact value, and then the next double does not.
   const alpha::Index optimal = ac.optimal_level();
-  const double optimal_alpha_sq = printable(ac.spectrum_value(optimal - 1));
+  double optimal_alpha_sq = ac.spectrum_value(optimal - 1);
+  if (ac.level(optimal_alpha_sq) < optimal)
+    optimal_alpha_sq = std::nextafter(optimal_alpha_sq, std::numeric_limits<double>::infinity());
+  optimal_alpha_sq = printable(optimal_alpha_sq);
   std::vector<Sample> samples;
   for (double a : opt.alpha_sq) samples.push_back({printable(a), ac.level(a)});
   if (samples.empty()) samples.push_back({optimal_alpha_sq, optimal});

@@ -140,6 +140,18 @@ case $case_name in
     grep -q '"singular":0,"regular":2796,"interior":0}' "$tmp/out" ||
       fail "at the optimal alpha every vertex is on the shape"
     ;;
+  spectrum_optimal_roundtrip)
+    # The printed optimal alpha_sq, fed back, gives the shape it names: one
+    # component (the nearest double may lie below the exact critical value).
+    for flags in "" --weighted; do
+      run -q spectrum "$pdb" $flags --json
+      expect_success
+      optimal=$(json_values optimal_alpha_sq)
+      run -q spectrum "$pdb" $flags --alpha-sq "$optimal" --json
+      expect_success
+      expect_json_values components 1
+    done
+    ;;
   spectrum_not_finite)
     run spectrum "$grid" --alpha-sq nan --json
     expect_error "--alpha-sq: 'nan' is not a finite number"
