@@ -18,5 +18,7 @@ Subcommand add_delaunay_command(CLI::App& app);
 Subcommand add_spectrum_command(CLI::App& app);
 Subcommand add_persistence_command(CLI::App& app);
 Subcommand add_shape_command(CLI::App& app);
+Subcommand add_pockets_command(CLI::App& app);
+Subcommand add_surface_command(CLI::App& app);
 
 }  // namespace alphapocket

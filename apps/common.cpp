@@ -10,7 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "alpha/error.hpp"
-#include "structure_file.hpp"
+#include "molecule/radii.hpp"
 
 namespace alphapocket {
 namespace {
@@ -30,12 +30,39 @@ auto naming_file(const std::string& file, F&& build) {
 
 void add_input_options(CLI::App& sub, InputOptions& opt) {
   sub.add_option("FILE", opt.file,
-                 "Point file (x y z per line; x y z r with --weighted) or structure file "
-                 "(.pdb .ent .cif .mmcif, optionally .gz: all atoms of the first model)")
+                 "Point file (x y z per line; x y z r with --weighted) or structure file (.pdb .ent .cif "
+                 ".mmcif, optionally .gz), whose atoms are always weighted points: ball radius = ProtOr radius "
+                 "+ probe")
       ->required();
   sub.add_flag("--weighted", opt.weighted,
-               "Weighted points: read a radius r per point (weight r^2); for structure files every atom "
-               "gets r = 1.8 A");
+               "Point files: read a radius r per point (weight r^2). Structure files are always weighted, so "
+               "this changes nothing for them");
+  opt.structure_only = add_structure_options(sub, opt.structure, opt.probe);
+}
+
+std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::StructureOptions& selection,
+                                                      double& probe) {
+  const std::string group = "Structure files";
+  return {
+      sub.add_option("--probe", probe, "Solvent probe radius added to every atom radius, A (0: van der Waals balls)")
+          ->capture_default_str()
+          ->check(finite_number())
+          ->check(CLI::NonNegativeNumber)
+          ->group(group),
+      sub.add_option("--model", selection.model, "Model number to read (MODEL n; default: the first model)")
+          ->check(CLI::PositiveNumber)
+          ->group(group),
+      sub.add_option("--chains", selection.chains, "Chains to keep, e.g. A,B (default: all)")
+          ->delimiter(',')
+          ->group(group),
+      sub.add_flag("--keep-hydrogens", selection.keep_hydrogens, "Keep hydrogen atoms (dropped by default)")
+          ->group(group),
+      sub.add_flag("--keep-waters", selection.keep_waters, "Keep waters (dropped by default)")->group(group),
+      sub.add_flag("--keep-hetero", selection.keep_hetero,
+                   "Keep hetero groups: ligands, ions (dropped by default; modified residues of a polymer are "
+                   "always kept)")
+          ->group(group),
+  };
 }
 
 CLI::Validator finite_number() {
@@ -52,17 +79,43 @@ CLI::Validator finite_number() {
       "NUMBER");
 }
 
+molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options) {
+  molecule::Structure structure = molecule::read_structure(file, options);
+  spdlog::info("{}: {}", file, molecule::summary(structure.report));
+  for (const std::string& warning : structure.report.warnings) spdlog::warn("{}: {}", file, warning);
+  return structure;
+}
+
+PointSet atom_balls(const std::vector<molecule::Atom>& atoms, double probe) {
+  PointSet set;
+  set.points.reserve(atoms.size());
+  set.weights.reserve(atoms.size());
+  for (const molecule::Atom& a : atoms) {
+    set.points.push_back(a.position);
+    set.weights.push_back((a.radius + probe) * (a.radius + probe));
+  }
+  return set;
+}
+
 PointSet read_input(const InputOptions& opt) {
   Stopwatch read_time;
-  PointSet set;
-  if (!is_structure_file(opt.file)) {
-    set = read_point_file(opt.file, opt.weighted);
-  } else {
-    set.points = read_structure_atoms(opt.file);
-    if (opt.weighted) set.weights.assign(set.points.size(), kDefaultAtomRadius * kDefaultAtomRadius);
+  if (!molecule::is_structure_file(opt.file)) {
+    std::string given;
+    int count = 0;
+    for (const CLI::Option* o : opt.structure_only)
+      if (o->count() > 0) given += (count++ ? ", " : "") + o->get_name();
+    if (count)
+      throw std::runtime_error(opt.file + ": a point file, but " + given + (count > 1 ? " are" : " is") +
+                               " for structure files (.pdb .ent .cif .mmcif, optionally .gz)");
+    PointSet set = read_point_file(opt.file, opt.weighted);
+    spdlog::info("read {} {}points from {} in {:.3f} s", set.points.size(), opt.weighted ? "weighted " : "", opt.file,
+                 read_time.seconds());
+    return set;
   }
-  spdlog::info("read {} {}points from {} in {:.3f} s", set.points.size(), opt.weighted ? "weighted " : "",
-               opt.file, read_time.seconds());
+  const molecule::Structure structure = read_structure_file(opt.file, opt.structure);
+  PointSet set = atom_balls(structure.atoms, opt.probe);
+  spdlog::info("read {} atoms from {} in {:.3f} s: weighted points, radius = {} radius + probe {} A", set.points.size(),
+               opt.file, read_time.seconds(), molecule::kRadiusTable, opt.probe);
   return set;
 }
 
@@ -79,8 +132,8 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
   Stopwatch build_time;
   in.triangulation = triangulate(std::move(points), opt.file);
   spdlog::info("{} triangulation: {:.3f} s, {} vertices, {} finite cells",
-               opt.weighted ? "regular" : "Delaunay", build_time.seconds(), in.triangulation->num_vertices(),
-               in.triangulation->num_finite_cells());
+               in.triangulation->weighted() ? "regular" : "Delaunay", build_time.seconds(),
+               in.triangulation->num_vertices(), in.triangulation->num_finite_cells());
   Stopwatch complex_time;
   in.complex = naming_file(opt.file, [&] { return std::make_unique<alpha::AlphaComplex>(*in.triangulation); });
   spdlog::info("alpha complex: {:.3f} s, {} critical values, {} persistence pairs", complex_time.seconds(),

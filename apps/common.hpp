@@ -1,41 +1,61 @@
 // What the subcommands share: FILE (a point file or a structure file) and
-// --weighted, the points of FILE, their triangulation and alpha complex,
+// its options, the points of FILE, their triangulation and alpha complex,
 // and a few helpers for options and output.
 #pragma once
 #include <chrono>
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/triangulation.hpp"
+#include "molecule/structure.hpp"
 #include "point_file.hpp"
 
 namespace alphapocket {
 
-// Radius given to every atom of a structure file with --weighted, until a
-// molecule layer assigns radii per element.
-inline constexpr double kDefaultAtomRadius = 1.8;
+// Radius of the solvent probe added to every atom radius, A (water).
+inline constexpr double kDefaultProbe = 1.4;
 
 struct InputOptions {
   std::string file;
-  bool weighted = false;
+  bool weighted = false;                 // point files: x y z r per line
+  molecule::StructureOptions structure;  // structure files: which atoms
+  double probe = kDefaultProbe;          // structure files: atom i is (x_i, (r_i + probe)^2)
+  // The options that only apply to structure files, to reject them when
+  // FILE is a point file.
+  std::vector<const CLI::Option*> structure_only;
 };
 
-// Adds the positional FILE (required) and the --weighted flag.
+// Adds the positional FILE (required), --weighted, and the structure file
+// options (add_structure_options).
 void add_input_options(CLI::App& sub, InputOptions& opt);
+
+// Adds --probe, --model, --chains, --keep-hydrogens, --keep-waters and
+// --keep-hetero (help group "Structure files"); returns them.
+std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::StructureOptions& selection,
+                                                      double& probe);
+
+// A structure file read through the molecule layer; logs (info) what was
+// kept and dropped, and its warnings.
+molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options);
+
+// The atoms as weighted points: atom i is (x_i, (r_i + probe)^2).
+PointSet atom_balls(const std::vector<molecule::Atom>& atoms, double probe);
 
 // Alpha values on the command line: squared radii, finite (the validator
 // rejects inf and nan), and the convention of which simplices are present.
 inline constexpr const char* kAlphaSqHelp =
-    "alpha is a SQUARED radius (alpha_sq); with --weighted it may be negative (a ball of radius r "
-    "enters at -r^2). A simplex whose value equals alpha_sq counts as present (CGAL's convention).";
+    "alpha is a SQUARED radius (alpha_sq); for weighted points (--weighted, or a structure file) it may be "
+    "negative (a ball of radius r enters at -r^2). A simplex whose value equals alpha_sq counts as present "
+    "(CGAL's convention).";
 CLI::Validator finite_number();
 
-// The points of a point file, or the atoms of a structure file (with
-// --weighted: radius kDefaultAtomRadius each). Logs what was read.
+// The points of a point file, or the atoms of a structure file as
+// weighted points (always: ProtOr radius + probe). Logs what was read.
 PointSet read_input(const InputOptions& opt);
 
 // The triangulation of the points; library errors about the input (too few

@@ -32,6 +32,8 @@ int run(int argc, char** argv) {
   commands.push_back(alphapocket::add_spectrum_command(app));
   commands.push_back(alphapocket::add_persistence_command(app));
   commands.push_back(alphapocket::add_shape_command(app));
+  commands.push_back(alphapocket::add_pockets_command(app));
+  commands.push_back(alphapocket::add_surface_command(app));
 
   try {
     app.parse(argc, argv);

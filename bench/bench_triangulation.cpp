@@ -4,18 +4,16 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_3.h>
-#include <malloc.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "alpha/triangulation.hpp"
 #include "point_sets.hpp"
+#include "rss.hpp"
 
 namespace {
 
@@ -34,27 +32,12 @@ struct Run {
   std::size_t finite_cells;
 };
 
-// A field of /proc/self/status, in bytes.
-long status_bytes(const std::string& field) {
-  std::ifstream in("/proc/self/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(field + ":", 0) == 0) return std::stol(line.substr(field.size() + 1)) * 1024;
-  return 0;
-}
-
-// Builds with `build` (which returns the number of finite cells) and measures
-// time and peak RSS growth. Freed heap is returned to the OS first and the
-// kernel's high-water mark reset, so the previous build does not hide or
-// inflate this one's memory.
+// Builds with `build` (which returns the number of finite cells).
 template <class Build>
 Run measure(Build build) {
-  malloc_trim(0);
-  std::ofstream("/proc/self/clear_refs") << "5";
-  const long before = status_bytes("VmRSS");
-  const auto start = std::chrono::steady_clock::now();
-  const std::size_t cells = build();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {seconds, status_bytes("VmHWM") - before, cells};
+  std::size_t cells = 0;
+  const bench::Measurement m = bench::measure([&] { cells = build(); });
+  return {m.seconds, m.peak_bytes, cells};
 }
 
 struct Summary {

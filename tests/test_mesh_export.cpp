@@ -21,89 +21,19 @@
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
 #include "molecule/mesh_export.hpp"
+#include "mesh_checks.hpp"
 #include "point_sets.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-using ReadMesh = OpenMesh::TriMesh_ArrayKernelT<>;
-
-// A fresh directory under the system temporary directory, removed at the end.
-class TempDir {
-public:
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "mesh_export_XXXXXX").string();
-    REQUIRE(::mkdtemp(tmpl.data()) != nullptr);
-    path_ = tmpl;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
-  // Names of the files in the directory.
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-private:
-  fs::path path_;
-};
-
-ReadMesh read_back(const fs::path& file, bool colors = false) {
-  ReadMesh mesh;
-  OpenMesh::IO::Options options;
-  if (colors) {
-    mesh.request_face_colors();
-    options += OpenMesh::IO::Options::FaceColor;
-  }
-  REQUIRE(OpenMesh::IO::read_mesh(mesh, file.string(), options));
-  if (colors) REQUIRE(options.check(OpenMesh::IO::Options::FaceColor));
-  return mesh;
-}
-
-// The faces are closed and consistently oriented: every edge (by vertex
-// positions, so that copies of a vertex count as one) is run through as
-// often in one direction as in the other; for a manifold, once each way.
-bool closed_and_consistent(const ReadMesh& mesh, bool manifold = true) {
-  using Key = std::array<float, 3>;
-  auto key = [&](ReadMesh::VertexHandle v) {
-    const auto& p = mesh.point(v);
-    return Key{p[0], p[1], p[2]};
-  };
-  std::map<std::pair<Key, Key>, int> directed;
-  for (auto f : mesh.faces()) {
-    std::vector<Key> k;
-    for (auto v : f.vertices()) k.push_back(key(v));
-    if (k.size() != 3) return false;
-    for (int i = 0; i < 3; ++i) ++directed[{k[i], k[(i + 1) % 3]}];
-  }
-  for (const auto& [edge, count] : directed) {
-    const auto it = directed.find({edge.second, edge.first});
-    if (it == directed.end() || it->second != count || (manifold && count != 1)) return false;
-  }
-  return true;
-}
-
-// Volume enclosed by the mesh (divergence theorem): positive when the faces
-// are oriented outward.
-double signed_volume(const ReadMesh& mesh) {
-  double v = 0;
-  for (auto f : mesh.faces()) {
-    std::vector<OpenMesh::Vec3d> p;
-    for (auto vh : f.vertices()) {
-      const auto& q = mesh.point(vh);
-      p.emplace_back(q[0], q[1], q[2]);
-    }
-    v += OpenMesh::dot(p[0], OpenMesh::cross(p[1], p[2])) / 6;
-  }
-  return v;
-}
+using testing::closed_and_consistent;
+using testing::read_back;
+using testing::read_text;
+using testing::ReadMesh;
+using testing::signed_volume;
+using testing::TempDir;
 
 molecule::TriangleMesh boundary_mesh(const alpha::AlphaComplex& a, alpha::Index level) {
   molecule::TriangleMesh m;
@@ -118,11 +48,6 @@ std::size_t used_vertices(const molecule::TriangleMesh& m) {
   for (const auto& t : m.triangles)
     for (auto v : t) used[v] = 1;
   return std::size_t(std::count(used.begin(), used.end(), 1));
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace

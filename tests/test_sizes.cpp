@@ -391,7 +391,7 @@ TEST_CASE("attached agrees with exact power distances", "[sizes]") {
     std::mt19937_64 rng(63);
     std::uniform_int_distribution<int> dim(1, 3);
     std::uniform_int_distribution<Index> pick(0, Index(in.pts.size() - 1));
-    int wrong = 0, on_sphere = 0;
+    int wrong = 0, on_sphere = 0, wrong_any = 0, any_attached = 0;
     for (int trial = 0; trial < 3000; ++trial) {
       const Simplex s = random_simplex(rng, in.pts.size(), dim(rng));
       const auto sp = oracle(in, s);
@@ -400,8 +400,17 @@ TEST_CASE("attached agrees with exact power distances", "[sizes]") {
       const mpq_class pi = power(in, *sp, q);
       on_sphere += pi == 0;
       wrong += k.attached(s, q) != (pi < 0);
+      // attached_any: the same test for several points at once (one of them
+      // a vertex of s, on the sphere).
+      const std::array<Index, 3> qs{pick(rng), s.v[0], q};
+      bool any = false;
+      for (const Index x : qs) any = any || power(in, *sp, x) < 0;
+      any_attached += any;
+      wrong_any += k.attached_any(s, qs) != any;
     }
     CHECK(wrong == 0);
+    CHECK(wrong_any == 0);
+    CHECK(any_attached > 0);
     if (grid) CHECK(on_sphere > 0);
   }
 }

@@ -204,5 +204,17 @@ TEST_CASE("Edges and triangles: counts, incidences and Euler characteristic", "[
     std::size_t incidences = 0;
     for (Index x = 0; x < s.num_edges(); ++x) incidences += s.edge_triangles(x).size();
     CHECK(incidences == 3 * s.num_triangles());
+    // An edge's triangles (found by turning around it) are exactly those
+    // having it among their edges.
+    std::vector<std::vector<Index>> by_edge(s.num_edges());
+    for (Index x = 0; x < s.num_triangles(); ++x)
+      for (Index y : s.triangle_edges(x)) by_edge[y].push_back(x);
+    std::size_t wrong = 0;
+    for (Index x = 0; x < s.num_edges(); ++x) {
+      std::vector<Index> ring(s.edge_triangles(x).begin(), s.edge_triangles(x).end());
+      std::sort(ring.begin(), ring.end());
+      wrong += ring != by_edge[x];
+    }
+    CHECK(wrong == 0);
   }
 }

@@ -1,12 +1,15 @@
 #include "alpha/alpha_complex.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <iterator>
 #include <numeric>
 #include <tuple>
 
 #include "alpha/error.hpp"
+#include "huge_pages.hpp"
+#include "radix_sort.hpp"
 
 namespace alpha {
 namespace {
@@ -27,6 +30,36 @@ double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
   return std::sqrt(nx * nx + ny * ny + nz * nz) / 2;
 }
+
+// The points (and weights) copied in the order in which the cells first use
+// them. Cells are stored in spatial order but vertex ids are input indices,
+// which may be random in space; the size and attachment tests read points
+// at every step, and local copies keep those reads in cache.
+class LocalPoints {
+public:
+  explicit LocalPoints(const Triangulation& t) : local_(t.num_points(), kNone) {
+    points_.reserve(t.num_vertices());
+    if (t.weighted()) weights_.reserve(t.num_vertices());
+    for (const Cell& c : t.cells())
+      for (const Index v : c.v)
+        if (v != kInfinite && local_[v] == kNone) {
+          local_[v] = Index(points_.size());
+          points_.push_back(t.point(v));
+          if (t.weighted()) weights_.push_back(t.weight(v));
+        }
+  }
+  SizeKernel kernel() const { return SizeKernel(points_.data(), weights_.empty() ? nullptr : weights_.data()); }
+  Index operator[](Index v) const { return local_[v]; }
+  Simplex operator()(Simplex s) const {
+    for (int i = 0; i < s.n; ++i) s.v[i] = local_[s.v[i]];
+    return s;
+  }
+
+private:
+  std::vector<Index> local_;  // by input index
+  std::vector<Vec3> points_;
+  std::vector<double> weights_;
+};
 
 }  // namespace
 
@@ -49,131 +82,143 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   ids_ = {Index(t.num_points()), Index(t.num_points() + s.num_edges()),
           Index(t.num_points() + s.num_edges() + s.num_triangles())};
   if (std::size_t(ids_.cells) + t.num_cells() >= kNever) fail("too many simplices for 32-bit ids");
-  const std::size_t num_ids = ids_.cells + t.num_cells();
-  SizeKernel sizes = size_kernel();
-  auto simplex_of = [&](Index g) { return simplex(g); };
+  rank_critical();
+  bound_faces();
+  pairs_ = persistence_pairs(t, s, ranks_);
+}
 
-  // Top-down interval records, first as global ids of the simplices whose
-  // sizes bound them; translated to ranks once the sizes are sorted.
-  constexpr Index kInf = kNever;
-  // Filtered sizes of all simplices, computed in id order (cells, and the
-  // edges and triangles numbered by cell, are stored in spatial order).
-  std::vector<Size> size_of(num_ids);
-  for (Index g = 0; g < num_ids; ++g)
-    if (g < ids_.cells || !t.is_infinite(g - ids_.cells)) size_of[g] = sizes.size(simplex_of(g));
-  auto size = [&](Index g) -> const Size& { return size_of[g]; };
-  std::uint64_t filtered_compares = 0;
-  auto less = [&](Index a, Index b) {  // exact, kInf last
-    if (a == b) return false;
-    if (a == kInf || b == kInf) return b == kInf;
-    const int f = compare_filtered(size(a), size(b));  // decides almost always
-    if (f != kUndecided) return ++filtered_compares, f < 0;
-    return sizes.compare(simplex_of(a), size(a), simplex_of(b), size(b)) < 0;
-  };
-  auto min_of = [&](Index a, Index b) { return less(b, a) ? b : a; };
-  auto max_of = [&](Index a, Index b) { return (a == kInf || b == kInf) ? kInf : less(a, b) ? b : a; };
-  struct Record {
-    Index entry = kInf, low = kInf, high = kInf;
-    bool attached = false;
-  };
-  std::vector<Record> tri(s.num_triangles()), edg(s.num_edges()), ver(t.num_points());
-  // A face stops being singular when its first coface enters, and becomes
-  // interior with its last one.
-  auto absorb = [&](Record& r, const Record& coface, bool& first) {
-    r.low = first ? coface.entry : min_of(r.low, coface.entry);
-    r.high = first ? coface.high : max_of(r.high, coface.high);
-    first = false;
-  };
+void AlphaComplex::rank_critical() {
+  const Triangulation& t = *t_;
+  const Simplices& s = simplices_;
+  const LocalPoints local(t);
+  SizeKernel sizes = local.kernel();
 
+  // Attachment depends on no size: a face is attached when the vertex of a
+  // coface opposite to it lies inside its smallest orthogonal sphere. (Sums
+  // of vertex ids wrap exactly: they give the one vertex not in the face.)
+  // Edges and vertices are tested from their cofaces, walked in id order.
+  // Without weights no vertex is attached: its sphere is the point itself.
+  vertex_attached_.resize(t.num_points());
+  edge_attached_.resize(s.num_edges());
+  triangle_attached_.resize(s.num_triangles());
+  std::vector<Index> others;
   for (Index f = 0; f < s.num_triangles(); ++f) {
-    const Simplex sf(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]);
-    Record& r = tri[f];
-    bool hull = false, first = true;
-    for (Index c : s.triangle_cells(f)) {
-      if (t.is_infinite(c)) {
-        hull = true;
-        continue;
-      }
-      const Index g = ids_.cells + c;
-      r.low = min_of(r.low, g);
-      r.high = first ? g : max_of(r.high, g);
-      first = false;
-      const auto& cv = t.cell(c).v;  // the vertex of c off the triangle (sums wrap exactly)
-      const Index q = cv[0] + cv[1] + cv[2] + cv[3] - sf.v[0] - sf.v[1] - sf.v[2];
-      r.attached = r.attached || sizes.attached(sf, q);
+    const auto fv = s.triangle(f);
+    others.clear();
+    for (const Index c : s.triangle_cells(f)) {
+      if (t.is_infinite(c)) continue;
+      const auto& cv = t.cell(c).v;
+      others.push_back(local[cv[0] + cv[1] + cv[2] + cv[3] - fv[0] - fv[1] - fv[2]]);
     }
-    if (hull) r.high = kInf;
-    r.entry = r.attached ? r.low : ids_.triangles + f;
-  }
-  for (Index e = 0; e < s.num_edges(); ++e) {
-    const auto& ev = s.edge(e);
-    const Simplex se(ev[0], ev[1]);
-    Record& r = edg[e];
-    bool first = true;
-    for (Index f : s.edge_triangles(e)) {
-      absorb(r, tri[f], first);
-      const auto& fv = s.triangle(f);
-      const Index q = fv[0] + fv[1] + fv[2] - ev[0] - ev[1];
-      r.attached = r.attached || sizes.attached(se, q);
+    triangle_attached_[f] = sizes.attached_any(local(Simplex(fv[0], fv[1], fv[2])), others);
+    for (int k = 0; k < 3; ++k) {  // edge k is opposite vertex k
+      const Index e = s.triangle_edges(f)[k];
+      if (!edge_attached_[e])
+        edge_attached_[e] = sizes.attached(local(Simplex(fv[(k + 1) % 3], fv[(k + 2) % 3])), local[fv[k]]);
     }
-    r.entry = r.attached ? r.low : ids_.edges + e;
   }
-  for (Index v = 0; v < t.num_points(); ++v) {
-    if (t.status(v) != PointStatus::vertex) continue;
-    Record& r = ver[v];
-    bool first = true;
-    for (Index e : s.vertex_edges(v)) {
-      absorb(r, edg[e], first);
-      const Index q = s.edge(e)[0] == v ? s.edge(e)[1] : s.edge(e)[0];
-      r.attached = r.attached || sizes.attached(Simplex(v), q);
+  for (Index e = 0; e < s.num_edges() && t.weighted(); ++e)
+    for (int k = 0; k < 2; ++k) {
+      const Index v = s.edge(e)[k];
+      if (!vertex_attached_[v]) vertex_attached_[v] = sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - k]]);
     }
-    r.entry = r.attached ? r.low : v;
-  }
 
-  // The spectrum: sort the referenced sizes by their double value, then
-  // exactly within runs of overlapping error intervals.
-  std::vector<char> critical(num_ids, 0);
-  auto mark = [&](Index g) {
-    if (g != kInf) critical[g] = 1;
+  // The critical values are the sizes of the finite cells and of the
+  // unattached faces (an attached face enters with a coface, and mu_low,
+  // mu_high are entries of cofaces). Sorted by their double values (in
+  // global id order among equal ones), then exactly within each run of
+  // overlapping error intervals; the error is kept as a float rounded up.
+  struct Critical {
+    double value;
+    float error;
+    Index id;  // global
   };
-  for (const auto* records : {&tri, &edg, &ver})
-    for (const Record& r : *records) mark(r.entry), mark(r.low), mark(r.high);
+  std::vector<Critical> order;
+  reserve_huge(order, t.num_finite_cells() + t.num_vertices() +
+                std::count(edge_attached_.begin(), edge_attached_.end(), false) +
+                std::count(triangle_attached_.begin(), triangle_attached_.end(), false));
+  auto add = [&](Index g) {
+    const Size z = sizes.size(local(simplex(g)));
+    float error = float(z.error);
+    if (double(error) < z.error) error = std::nextafter(error, HUGE_VALF);
+    order.push_back({z.value + 0.0, error, g});  // + 0.0: -0 sorts as 0
+  };
+  for (Index v = 0; v < t.num_points(); ++v)
+    if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add(v);
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (!edge_attached_[e]) add(ids_.edges + e);
+  for (Index f = 0; f < s.num_triangles(); ++f)
+    if (!triangle_attached_[f]) add(ids_.triangles + f);
   for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) mark(ids_.cells + c);
-  std::vector<std::pair<double, Index>> by_value;
-  for (Index g = 0; g < num_ids; ++g)
-    if (critical[g]) by_value.emplace_back(size(g).value, g);
-  std::sort(by_value.begin(), by_value.end());
-  std::vector<Index> order(by_value.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = by_value[k].second;
-  by_value = {};
-  std::vector<Index> rank_of(num_ids, kNever);
+    if (!t.is_infinite(c)) add(ids_.cells + c);
+  // Doubles ordered as unsigned integers: flip all bits of negatives, the
+  // sign bit of the others.
+  radix_sort(order, [](const Critical& c) {
+    const auto bits = std::bit_cast<std::uint64_t>(c.value);
+    return bits ^ (bits >> 63 ? ~std::uint64_t(0) : std::uint64_t(1) << 63);
+  });
+  std::uint64_t filtered_compares = 0;
+  auto less = [&](const Critical& a, const Critical& b) {
+    const Size sa{a.value, a.error}, sb{b.value, b.error};
+    const int f = compare_filtered(sa, sb);  // decides almost always
+    if (f != kUndecided) return ++filtered_compares, f < 0;
+    return sizes.compare(local(simplex(a.id)), sa, local(simplex(b.id)), sb) < 0;
+  };
+  // Entry ranks of the critical simplices (faces: their own size's rank).
+  assign_huge(ranks_.vertex, t.num_points(), kNever);
+  assign_huge(ranks_.edge, s.num_edges(), kNever);
+  assign_huge(ranks_.triangle, s.num_triangles(), kNever);
+  assign_huge(ranks_.cell, t.num_cells(), kNever);
+  auto set_rank = [&](Index g, Index rank) {
+    if (g < ids_.edges) ranks_.vertex[g] = rank;
+    else if (g < ids_.triangles) ranks_.edge[g - ids_.edges] = rank;
+    else if (g < ids_.cells) ranks_.triangle[g - ids_.triangles] = rank;
+    else ranks_.cell[g - ids_.cells] = rank;
+  };
+  reserve_huge(spectrum_, order.size());
   for (std::size_t b = 0; b < order.size();) {
     std::size_t e = b + 1;
-    double reach = size(order[b]).value + size(order[b]).error;
-    while (e < order.size() && size(order[e]).value - size(order[e]).error <= reach)
-      reach = std::max(reach, size(order[e]).value + size(order[e]).error), ++e;
+    double reach = order[b].value + order[b].error;
+    while (e < order.size() && order[e].value - order[e].error <= reach)
+      reach = std::max(reach, order[e].value + double(order[e].error)), ++e;
     if (e - b > 1) std::stable_sort(order.begin() + b, order.begin() + e, less);
     for (std::size_t k = b; k < e; ++k) {
-      if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(order[k]);
-      rank_of[order[k]] = Index(spectrum_.size() - 1);
+      if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(order[k].id);
+      set_rank(order[k].id, Index(spectrum_.size() - 1));
     }
     b = e;
   }
+  order = {};
+  spectrum_.shrink_to_fit();
 
-  auto to_interval = [&](const Record& r) {
-    auto rk = [&](Index g) { return g == kInf ? kNever : rank_of[g]; };
-    return Interval{rk(r.entry), rk(r.low), rk(r.high), r.attached};
-  };
-  std::transform(ver.begin(), ver.end(), std::back_inserter(vertex_), to_interval);
-  std::transform(edg.begin(), edg.end(), std::back_inserter(edge_), to_interval);
-  std::transform(tri.begin(), tri.end(), std::back_inserter(triangle_), to_interval);
-  cell_.resize(t.num_cells(), kNever);
-  for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) cell_[c] = rank_of[ids_.cells + c];
   size_stats_ = sizes.stats();
   size_stats_.compare.filtered += filtered_compares;
-  pairs_ = persistence_pairs(t, s, filtration());
+}
+
+void AlphaComplex::bound_faces() {
+  const Triangulation& t = *t_;
+  const Simplices& s = simplices_;
+  // Intervals top-down, in ranks: a face stops being singular when its
+  // first coface enters and becomes interior with the last one (never for
+  // a hull face: infinite cells have rank kNever); an attached face enters
+  // with its first coface. The faces' bounds gather from their cofaces,
+  // walked in id order.
+  auto absorb = [](Bounds& b, Index entry, Index high) { b.low = std::min(b.low, entry), b.high = std::max(b.high, high); };
+  assign_huge(edge_bounds_, s.num_edges(), {kNever, 0});
+  for (Index f = 0; f < s.num_triangles(); ++f) {
+    Interval i = triangle_interval(f);
+    if (i.attached) ranks_.triangle[f] = i.entry = i.mu_low;
+    for (const Index e : s.triangle_edges(f)) absorb(edge_bounds_[e], i.entry, i.mu_high);
+  }
+  assign_huge(vertex_bounds_, t.num_points(), {kNever, 0});
+  for (Index e = 0; e < s.num_edges(); ++e) {
+    if (edge_attached_[e]) ranks_.edge[e] = edge_bounds_[e].low;
+    for (const Index v : s.edge(e)) absorb(vertex_bounds_[v], ranks_.edge[e], edge_bounds_[e].high);
+  }
+  for (Index v = 0; v < t.num_points(); ++v) {
+    if (t.status(v) != PointStatus::vertex) vertex_bounds_[v] = {};
+    else if (vertex_attached_[v]) ranks_.vertex[v] = vertex_bounds_[v].low;
+  }
 }
 
 Simplex AlphaComplex::simplex(Index g) const {
@@ -181,7 +226,7 @@ Simplex AlphaComplex::simplex(Index g) const {
   if (g < ids_.edges) return Simplex(g);
   if (g < ids_.triangles) return Simplex(s.edge(g - ids_.edges)[0], s.edge(g - ids_.edges)[1]);
   if (g < ids_.cells) {
-    const auto& f = s.triangle(g - ids_.triangles);
+    const auto f = s.triangle(g - ids_.triangles);
     return Simplex(f[0], f[1], f[2]);
   }
   return cell_simplex(*t_, g - ids_.cells);
@@ -208,29 +253,24 @@ Classification AlphaComplex::classify(const Interval& i, Index level) {
   return Classification::interior;
 }
 
+Interval AlphaComplex::triangle_interval(Index f) const {
+  const auto c = simplices_.triangle_cells(f);
+  const Index a = ranks_.cell[c[0]], b = ranks_.cell[c[1]];
+  return {ranks_.triangle[f], std::min(a, b), std::max(a, b), triangle_attached_[f]};
+}
+
 ClassCounts AlphaComplex::counts(Index level) const {
   ClassCounts n{};
-  for (Index v = 0; v < vertex_.size(); ++v)
-    if (t_->status(v) == PointStatus::vertex) ++n[0][int(classify(vertex_[v], level))];
-  for (const Interval& i : edge_) ++n[1][int(classify(i, level))];
-  for (const Interval& i : triangle_) ++n[2][int(classify(i, level))];
-  for (Index c = 0; c < cell_.size(); ++c)
+  for (Index v = 0; v < t_->num_points(); ++v)
+    if (t_->status(v) == PointStatus::vertex) ++n[0][int(classify(vertex_interval(v), level))];
+  for (Index e = 0; e < simplices_.num_edges(); ++e) ++n[1][int(classify(edge_interval(e), level))];
+  for (Index f = 0; f < simplices_.num_triangles(); ++f) ++n[2][int(classify(triangle_interval(f), level))];
+  for (Index c = 0; c < t_->num_cells(); ++c)
     if (!t_->is_infinite(c)) ++n[3][int(classify_cell(c, level))];
   return n;
 }
 
-FiltrationRanks AlphaComplex::filtration() const {
-  FiltrationRanks r;
-  auto entries = [](const std::vector<Interval>& in, std::vector<Index>& out) {
-    out.reserve(in.size());
-    for (const Interval& i : in) out.push_back(i.entry);
-  };
-  entries(vertex_, r.vertex);
-  entries(edge_, r.edge);
-  entries(triangle_, r.triangle);
-  r.cell = cell_;
-  return r;
-}
+FiltrationRanks AlphaComplex::filtration() const { return ranks_; }
 
 std::array<std::size_t, 3> AlphaComplex::betti(Index level) const {
   return level == 0 ? std::array<std::size_t, 3>{0, 0, 0} : betti_at(pairs_, level - 1);
@@ -238,8 +278,8 @@ std::array<std::size_t, 3> AlphaComplex::betti(Index level) const {
 
 Index AlphaComplex::optimal_level() const {
   Index last = 0;
-  for (Index v = 0; v < vertex_.size(); ++v)
-    if (t_->status(v) == PointStatus::vertex) last = std::max(last, vertex_[v].entry);
+  for (Index v = 0; v < t_->num_points(); ++v)
+    if (t_->status(v) == PointStatus::vertex) last = std::max(last, ranks_.vertex[v]);
   for (const PersistencePair& p : pairs_)
     if (p.dim == 0 && p.death != kNever) last = std::max(last, p.death);
   return last + 1;
@@ -247,8 +287,8 @@ Index AlphaComplex::optimal_level() const {
 
 double AlphaComplex::volume(Index level) const {
   double v = 0;
-  for (Index c = 0; c < cell_.size(); ++c) {
-    if (cell_[c] >= level) continue;
+  for (Index c = 0; c < t_->num_cells(); ++c) {
+    if (ranks_.cell[c] >= level) continue;
     const auto& cv = t_->cell(c).v;
     v += tetra_volume(t_->point(cv[0]), t_->point(cv[1]), t_->point(cv[2]), t_->point(cv[3]));
   }
@@ -257,8 +297,8 @@ double AlphaComplex::volume(Index level) const {
 
 double AlphaComplex::area(Index level) const {
   double a = 0;
-  for (Index f = 0; f < triangle_.size(); ++f) {
-    const Classification k = classify(triangle_[f], level);
+  for (Index f = 0; f < simplices_.num_triangles(); ++f) {
+    const Classification k = classify(triangle_interval(f), level);
     if (k != Classification::regular && k != Classification::singular) continue;
     const auto& fv = simplices_.triangle(f);
     a += triangle_area(t_->point(fv[0]), t_->point(fv[1]), t_->point(fv[2]));
@@ -268,27 +308,29 @@ double AlphaComplex::area(Index level) const {
 
 ShapeBoundary AlphaComplex::boundary(Index level) const {
   ShapeBoundary b;
-  for (Index f = 0; f < triangle_.size(); ++f) {
-    const Classification k = classify(triangle_[f], level);
+  for (Index f = 0; f < simplices_.num_triangles(); ++f) {
+    const Classification k = classify(triangle_interval(f), level);
     auto fv = simplices_.triangle(f);  // its normal points into triangle_cells(f)[0]
     if (k == Classification::singular) b.singular_triangles.push_back(fv);
     if (k != Classification::regular) continue;
     const Index inside = simplices_.triangle_cells(f)[0];
-    if (!t_->is_infinite(inside) && cell_[inside] < level) std::swap(fv[1], fv[2]);
+    if (!t_->is_infinite(inside) && ranks_.cell[inside] < level) std::swap(fv[1], fv[2]);
     b.triangles.push_back(fv);
   }
-  for (Index e = 0; e < edge_.size(); ++e)
-    if (classify(edge_[e], level) == Classification::singular) b.singular_edges.push_back(simplices_.edge(e));
-  for (Index v = 0; v < vertex_.size(); ++v)
-    if (t_->status(v) == PointStatus::vertex && classify(vertex_[v], level) == Classification::singular)
+  for (Index e = 0; e < simplices_.num_edges(); ++e)
+    if (classify(edge_interval(e), level) == Classification::singular) b.singular_edges.push_back(simplices_.edge(e));
+  for (Index v = 0; v < t_->num_points(); ++v)
+    if (t_->status(v) == PointStatus::vertex && classify(vertex_interval(v), level) == Classification::singular)
       b.singular_vertices.push_back(v);
   return b;
 }
 
 std::size_t AlphaComplex::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return simplices_.memory_bytes() + bytes(vertex_) + bytes(edge_) + bytes(triangle_) + bytes(cell_) +
-         bytes(spectrum_) + bytes(pairs_);
+  auto bits = [](const std::vector<bool>& v) { return v.capacity() / 8; };
+  return simplices_.memory_bytes() + bytes(ranks_.vertex) + bytes(ranks_.edge) + bytes(ranks_.triangle) +
+         bytes(ranks_.cell) + bytes(vertex_bounds_) + bytes(edge_bounds_) + bits(vertex_attached_) +
+         bits(edge_attached_) + bits(triangle_attached_) + bytes(spectrum_) + bytes(pairs_);
 }
 
 }  // namespace alpha

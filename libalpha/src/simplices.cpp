@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "alpha/error.hpp"
+#include "huge_pages.hpp"
+
 namespace alpha {
 namespace {
 
@@ -10,13 +13,6 @@ namespace {
 constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr int kLocalEdge[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
-// Compressed rows from per-row counts: start[i]..start[i+1].
-std::vector<std::size_t> offsets(const std::vector<std::size_t>& counts) {
-  std::vector<std::size_t> start(counts.size() + 1, 0);
-  for (std::size_t i = 0; i < counts.size(); ++i) start[i + 1] = start[i] + counts[i];
-  return start;
-}
-
 }  // namespace
 
 Simplices::Simplices(const Triangulation& t) : t_(&t) {
@@ -24,73 +20,71 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   // Edges in order of the first cell holding them: walking the cells in
   // storage order keeps memory access local. The first cell of an edge
   // turns around it and records the new id in every cell of that ring.
-  std::vector<std::array<Index, 6>> cell_edges(t.num_cells());  // temporary
-  for (auto& ce : cell_edges) ce.fill(kNone);
-  edges_.reserve(t.num_cells() * 11 / 10 + 16);
+  // Counts from Euler's relation for the 3-sphere (the infinite vertex
+  // included): V - E + F - C = 0 with F = 2C, so E = V + C, less the hull
+  // vertices' edges to infinity; each infinite cell has 3 of the F facets
+  // through infinity, each shared by two cells.
+  const std::size_t nc = t.num_cells(), infinite_cells = nc - t.num_finite_cells();
+  std::vector<std::array<Index, 6>> cell_edges;  // temporary
+  std::array<Index, 6> none;
+  none.fill(kNone);
+  assign_huge(cell_edges, nc, none);
+  reserve_huge(edges_, t.num_vertices() + 1 + nc);
+  reserve_huge(edge_cells_, t.num_vertices() + 1 + nc);
   for (Index c = 0; c < t.num_cells(); ++c) {
     for (int e = 0; e < 6; ++e) {
       const Index a = t.cell(c).v[kEdge[e][0]], b = t.cell(c).v[kEdge[e][1]];
       if (cell_edges[c][e] != kNone || a == kInfinite || b == kInfinite) continue;
       const Index id = static_cast<Index>(edges_.size());
       edges_.push_back({std::min(a, b), std::max(a, b)});
+      edge_cells_.push_back(c);
       // Cells around ab: cross the facet opposite one of the two other
       // vertices; in the next cell, cross the facet opposite the vertex
       // shared with the previous one.
       Index cur = c;
       Index across = t.cell(c).v[kEdge[5 - e][0]];
       do {
-        const Cell& cell = t.cell(cur);
         const int ia = t.index_of(cur, a), ib = t.index_of(cur, b);
         cell_edges[cur][kLocalEdge[ia][ib]] = id;
-        const int k = t.index_of(cur, across);
-        const Index next = cell.n[k];
-        across = cell.v[6 - ia - ib - k];  // the remaining vertex: shared with next
-        cur = next;
+        cur = ring_step(t, cur, ia, ib, t.index_of(cur, across), across);
       } while (cur != c);
     }
   }
   // Triangles: each finite facet once, from the cell with the smaller id.
   // Facet i of a cell misses vertex i, so its edges are the local edges
   // avoiding i, listed opposite to the facet's vertices f[0], f[1], f[2].
-  cell_triangles_.assign(4 * t.num_cells(), kNone);
-  triangles_.reserve(2 * t.num_cells());
-  triangle_cells_.reserve(2 * t.num_cells());
-  triangle_edges_.reserve(2 * t.num_cells());
+  if (t.num_cells() >= (std::size_t(1) << 30)) fail("too many cells for 32-bit triangle records");
+  assign_huge(cell_triangles_, 4 * nc, kNone);
+  reserve_huge(triangle_facets_, 2 * nc - 3 * infinite_cells / 2);
+  reserve_huge(triangle_edges_, 2 * nc - 3 * infinite_cells / 2);
   auto local_edge = [](int a, int b) { return static_cast<std::size_t>(kLocalEdge[a][b]); };
   for (Index c = 0; c < t.num_cells(); ++c) {
     const Cell& cell = t.cell(c);
+    const int inf = t.infinite_position(c);
     for (int i = 0; i < 4; ++i) {
       const Index n = cell.n[i];
-      if (n < c) continue;
+      if (n < c || (inf >= 0 && inf != i)) continue;  // not ours, or not finite
       const auto& f = kFacet[i];
-      const std::array<Index, 3> tri{cell.v[f[0]], cell.v[f[1]], cell.v[f[2]]};
-      if (std::find(tri.begin(), tri.end(), kInfinite) != tri.end()) continue;
-      const Index id = static_cast<Index>(triangles_.size());
+      const Index id = static_cast<Index>(triangle_facets_.size());
       const auto& ce = cell_edges[c];
-      triangles_.push_back(tri);
-      triangle_cells_.push_back({c, n});
+      triangle_facets_.push_back(c << 2 | Index(i));
       triangle_edges_.push_back({ce[local_edge(f[1], f[2])], ce[local_edge(f[0], f[2])], ce[local_edge(f[0], f[1])]});
       cell_triangles_[4 * std::size_t(c) + i] = id;
       cell_triangles_[4 * std::size_t(n) + t.mirror_index(c, i)] = id;
-      num_hull_triangles_ += t.is_infinite(c) || t.is_infinite(n);
+      num_hull_triangles_ += inf >= 0 || t.is_infinite(n);
     }
   }
-  // Up incidences.
-  std::vector<std::size_t> count(np, 0);
-  for (const auto& e : edges_) ++count[e[0]], ++count[e[1]];
-  vertex_edge_start_ = offsets(count);
-  vertex_edges_.resize(vertex_edge_start_.back());
-  std::vector<std::size_t> fill(vertex_edge_start_.begin(), vertex_edge_start_.end() - 1);
+  cell_edges = {};
+  // Each vertex's edges, as compressed rows (32-bit offsets).
+  if (2 * edges_.size() >= kNone) fail("too many edges for 32-bit incidence offsets");
+  assign_huge(vertex_edge_start_, np + 1, Index(0));
+  for (const auto& e : edges_) ++vertex_edge_start_[e[0] + 1], ++vertex_edge_start_[e[1] + 1];
+  for (std::size_t v = 0; v < np; ++v) vertex_edge_start_[v + 1] += vertex_edge_start_[v];
+  assign_huge(vertex_edges_, vertex_edge_start_[np], kNone);
   for (Index e = 0; e < edges_.size(); ++e)
-    for (Index v : edges_[e]) vertex_edges_[fill[v]++] = e;
-  count.assign(edges_.size(), 0);
-  for (const auto& te : triangle_edges_)
-    for (Index e : te) ++count[e];
-  edge_triangle_start_ = offsets(count);
-  edge_triangles_.resize(edge_triangle_start_.back());
-  fill.assign(edge_triangle_start_.begin(), edge_triangle_start_.end() - 1);
-  for (Index f = 0; f < triangle_edges_.size(); ++f)
-    for (Index e : triangle_edges_[f]) edge_triangles_[fill[e]++] = f;
+    for (const Index v : edges_[e]) vertex_edges_[vertex_edge_start_[v]++] = e;
+  for (std::size_t v = np; v > 0; --v) vertex_edge_start_[v] = vertex_edge_start_[v - 1];  // the fill moved them
+  vertex_edge_start_[0] = 0;
 }
 
 Index Simplices::find_edge(Index u, Index v) const {
@@ -101,13 +95,14 @@ Index Simplices::find_edge(Index u, Index v) const {
 }
 
 bool Simplices::on_hull(Index f) const {
-  return t_->is_infinite(triangle_cells_[f][0]) || t_->is_infinite(triangle_cells_[f][1]);
+  const auto cells = triangle_cells(f);
+  return t_->is_infinite(cells[0]) || t_->is_infinite(cells[1]);
 }
 
 std::size_t Simplices::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(edges_) + bytes(triangles_) + bytes(triangle_edges_) + bytes(triangle_cells_) + bytes(cell_triangles_) +
-         bytes(vertex_edge_start_) + bytes(edge_triangle_start_) + bytes(vertex_edges_) + bytes(edge_triangles_);
+  return bytes(edges_) + bytes(edge_cells_) + bytes(triangle_facets_) + bytes(triangle_edges_) +
+         bytes(cell_triangles_) + bytes(vertex_edge_start_) + bytes(vertex_edges_);
 }
 
 }  // namespace alpha

@@ -81,26 +81,38 @@ template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
 
 // Power distance of q to the smallest sphere of s (a vertex, edge or
 // triangle), times the positive denominator `den` (1, L or A): with
-// v = q - p0 and dq = w0 - w_q, pi = |v|^2 + dq - 2 v.x.
-template <class T> T power_terms(const Local<T>& s, const T* v, const T& dq, T& den) {
-  const T g = dot(v, v) + dq;
-  if (s.k == 0) {
-    den = T(1);
-    return g;
-  }
+// v = q - p0 and dq = w0 - w_q, pi = |v|^2 + dq - 2 v.x. The terms that
+// depend on s alone form its frame, computed once for many q.
+template <class T> struct PowerFrame {
+  T den;    // 1, L or A
+  T h;      // edge: h0
+  T Vn[3];  // triangle: V x n
+};
+
+template <class T> PowerFrame<T> power_frame(const Local<T>& s) {
+  PowerFrame<T> f;
   const auto& u = s.u;
-  if (s.k == 1) {
-    den = dot(u[0], u[0]);
-    const T h = den - s.dw[0];
-    return den * g - h * dot(u[0], v);
+  if (s.k == 0) {
+    f.den = T(1);
+  } else if (s.k == 1) {
+    f.den = dot(u[0], u[0]);
+    f.h = f.den - s.dw[0];
+  } else {
+    T n[3], V[3];
+    cross(u[0], u[1], n);
+    f.den = dot(n, n);
+    const T h0 = lifted(s, 0), h1 = lifted(s, 1);
+    for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
+    cross(V, n, f.Vn);
   }
-  T n[3], V[3], Vn[3];
-  cross(u[0], u[1], n);
-  den = dot(n, n);
-  const T h0 = lifted(s, 0), h1 = lifted(s, 1);
-  for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
-  cross(V, n, Vn);
-  return den * g - dot(v, Vn);
+  return f;
+}
+
+template <class T> T power_terms(const Local<T>& s, const PowerFrame<T>& f, const T* v, const T& dq) {
+  const T g = dot(v, v) + dq;
+  if (s.k == 0) return g;
+  if (s.k == 1) return f.den * g - f.h * dot(s.u[0], v);
+  return f.den * g - dot(v, f.Vn);
 }
 
 // ---------------------------------------------------------------------------
@@ -313,22 +325,33 @@ Simplex sorted(const Simplex& s) {
 
 }  // namespace
 
-Size SizeKernel::size(const Simplex& simplex) const {
-  const Simplex s = sorted(simplex);
-  const double w0 = w_ ? w_[s.v[0]] : 0.0;
-  if (s.n == 1) return {-w0, 0};
-  bool ok = true;
+namespace {
+
+// The filter's local frame of a sorted simplex; ok turns false when a leaf
+// is out of the filter's range.
+Local<Approx> approx_local(const Vec3* pts, const double* w, const Simplex& s, bool& ok) {
+  const double w0 = w ? w[s.v[0]] : 0.0;
   Local<Approx> l;
   l.k = s.n - 1;
   l.w0 = area_leaf(w0, ok);
-  const Vec3& p0 = pts_[s.v[0]];
+  const Vec3& p0 = pts[s.v[0]];
   for (int i = 0; i < l.k; ++i) {
-    const Vec3& p = pts_[s.v[i + 1]];
+    const Vec3& p = pts[s.v[i + 1]];
     l.u[i][0] = length_leaf(p.x - p0.x, ok);
     l.u[i][1] = length_leaf(p.y - p0.y, ok);
     l.u[i][2] = length_leaf(p.z - p0.z, ok);
-    l.dw[i] = area_leaf(w_ ? w_[s.v[i + 1]] - w0 : 0.0, ok);
+    l.dw[i] = area_leaf(w ? w[s.v[i + 1]] - w0 : 0.0, ok);
   }
+  return l;
+}
+
+}  // namespace
+
+Size SizeKernel::size(const Simplex& simplex) const {
+  const Simplex s = sorted(simplex);
+  if (s.n == 1) return {w_ ? -w_[s.v[0]] : -0.0, 0};
+  bool ok = true;
+  const Local<Approx> l = approx_local(pts_, w_, s, ok);
   Approx N, D;
   size_terms(l, N, D);
   double value = N.v / D.v;
@@ -447,50 +470,46 @@ int SizeKernel::compare(const Simplex& a, double alpha_sq) {
   return e;
 }
 
-bool SizeKernel::attached(const Simplex& simplex, Index q) {
+bool SizeKernel::attached(const Simplex& s, Index q) { return attached_any(s, std::span<const Index>(&q, 1)); }
+
+bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs) {
   const Simplex s = sorted(simplex);
   if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached");
-  const double w0 = w_ ? w_[s.v[0]] : 0.0, wq = w_ ? w_[q] : 0.0;
-  const Vec3& p0 = pts_[s.v[0]];
   bool ok = true;
-  Local<Approx> l;
-  l.k = s.n - 1;
-  l.w0 = area_leaf(w0, ok);
-  for (int i = 0; i < l.k; ++i) {
-    const Vec3& p = pts_[s.v[i + 1]];
-    l.u[i][0] = length_leaf(p.x - p0.x, ok);
-    l.u[i][1] = length_leaf(p.y - p0.y, ok);
-    l.u[i][2] = length_leaf(p.z - p0.z, ok);
-    l.dw[i] = area_leaf(w_ ? w_[s.v[i + 1]] - w0 : 0.0, ok);
-  }
-  const Vec3& pq = pts_[q];
-  const Approx v[3] = {length_leaf(pq.x - p0.x, ok), length_leaf(pq.y - p0.y, ok),
-                       length_leaf(pq.z - p0.z, ok)};
-  const Approx dq = area_leaf(w0 - wq, ok);
-  Approx den;
-  const Approx P = power_terms(l, v, dq, den);
-  if (ok) {
+  const Local<Approx> l = approx_local(pts_, w_, s, ok);
+  const PowerFrame<Approx> frame = power_frame(l);
+  const double w0 = w_ ? w_[s.v[0]] : 0.0;
+  const Vec3& p0 = pts_[s.v[0]];
+  for (const Index q : qs) {
+    const double wq = w_ ? w_[q] : 0.0;
+    const Vec3& pq = pts_[q];
+    bool ok_q = ok;
+    const Approx v[3] = {length_leaf(pq.x - p0.x, ok_q), length_leaf(pq.y - p0.y, ok_q),
+                         length_leaf(pq.z - p0.z, ok_q)};
+    const Approx P = power_terms(l, frame, v, area_leaf(w0 - wq, ok_q));
     const double e = kPower[l.k] * P.p + kTiny;
-    if (P.v > e || P.v < -e) {
+    if (ok_q && (P.v > e || P.v < -e)) {
       ++stats_.attached.filtered;
-      return P.v < 0;
+      if (P.v < 0) return true;
+      continue;
     }
+    Scaled in;
+    for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
+    in.add(pq, wq);
+    in.finish();
+    const int sign = exact_sign([&](auto tag) {
+      using T = decltype(tag);
+      const Local<T> loc = in.local<T>(0, s.n - 1);
+      const PowerFrame<T> f = power_frame(loc);
+      if (certainly_zero(f.den)) fail("attached: degenerate simplex (affinely dependent points)");
+      T vq[3];
+      for (int a = 0; a < 3; ++a) vq[a] = in.coord<T>(s.n, a) - in.coord<T>(0, a);
+      return power_terms(loc, f, vq, T(loc.w0 - in.weight<T>(s.n)));
+    });
+    ++(sign != 0 ? stats_.attached.exact : stats_.attached.perturbed);
+    if (sign < 0) return true;
   }
-  Scaled in;
-  for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
-  in.add(pq, wq);
-  in.finish();
-  const int e = exact_sign([&](auto tag) {
-    using T = decltype(tag);
-    const Local<T> loc = in.local<T>(0, s.n - 1);
-    T vq[3], d;
-    for (int a = 0; a < 3; ++a) vq[a] = in.coord<T>(s.n, a) - in.coord<T>(0, a);
-    const T p = power_terms(loc, vq, T(loc.w0 - in.weight<T>(s.n)), d);
-    if (certainly_zero(d)) fail("attached: degenerate simplex (affinely dependent points)");
-    return p;
-  });
-  ++(e != 0 ? stats_.attached.exact : stats_.attached.perturbed);
-  return e < 0;
+  return false;
 }
 
 }  // namespace alpha

@@ -4,13 +4,13 @@
 #include <bit>
 #include <tuple>
 
-#include <sys/mman.h>
 #include <cmath>
 #include <numeric>
 #include <string>
 
 #include "alpha/error.hpp"
 #include "alpha/spatial_sort.hpp"
+#include "huge_pages.hpp"
 
 namespace alpha {
 namespace {
@@ -37,17 +37,6 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
   }
 }
 
-// The cell array is written at random places as it fills: with transparent
-// huge pages it takes 512 times fewer page faults. Only a hint.
-void advise_huge_pages([[maybe_unused]] void* data, [[maybe_unused]] std::size_t bytes) {
-#ifdef MADV_HUGEPAGE
-  constexpr std::uintptr_t kPage = 4096;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
-}
-
 }  // namespace
 
 // The incremental construction; lives only while the triangulation is built.
@@ -63,8 +52,8 @@ public:
     // A Delaunay triangulation of n random points has about 6.7 n cells;
     // reserving avoids repeated copies and page faults while growing.
     const std::size_t expected = reps.size() * 27 / 4 + 64;
-    cells_.reserve(expected);
-    advise_huge_pages(cells_.data(), expected * sizeof(Cell));
+    // The cell array is written at random places as it fills.
+    reserve_huge(cells_, expected);
     cell_mark_.assign(expected, 0);
     std::vector<Index> order = brio_order(t_.points_, reps);
     const std::array<Index, 4> first = initial_simplex(order);

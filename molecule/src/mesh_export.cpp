@@ -3,18 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
-#include <random>
 #include <system_error>
 #include <tuple>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 // OpenMesh's colour property default-constructs VectorT<unsigned char, 3>
 // without initializing it, which GCC reports where it is instantiated.
@@ -23,6 +17,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include "alpha/error.hpp"
+#include "molecule/atomic_file.hpp"
 
 namespace molecule {
 namespace {
@@ -63,16 +58,6 @@ const Format* checked_format(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
   return format;
-}
-
-// The directory that will hold path.
-fs::path directory_of(const std::string& path) {
-  const fs::path dir = fs::path(path).parent_path();
-  return dir.empty() ? fs::path(".") : dir;
-}
-
-[[noreturn]] void fail_to_create(const std::string& path, int err) {
-  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err));
 }
 
 // Silences OpenMesh's log streams (it reports to std::cerr / std::cout on
@@ -211,67 +196,11 @@ Mesh build_mesh(const std::string& path, const TriangleMesh& in, bool colors, Me
   return mesh;
 }
 
-// A new, empty file next to path, named after it (hidden, ending in .tmp);
-// removed again when this object dies before commit() moved it into place.
-class TemporaryFile {
-public:
-  explicit TemporaryFile(const std::string& target) : target_(target) {
-    const fs::path p(target);
-    const fs::path dir = directory_of(target);
-    std::random_device rd;
-    std::mt19937_64 rng((std::uint64_t(rd()) << 32) ^ rd() ^ std::uint64_t(::getpid()));
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      char suffix[32];
-      std::snprintf(suffix, sizeof suffix, ".%012llx.tmp", (unsigned long long)(rng() & 0xffffffffffffULL));
-      std::string name = ".";  // appended, not "." + ...: GCC 12 warns wrongly (-Wrestrict) on that
-      name += p.filename().string();
-      name += suffix;
-      const fs::path candidate = dir / name;
-      const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd >= 0) {
-        ::close(fd);
-        path_ = candidate.string();
-        return;
-      }
-      if (errno != EEXIST) fail_to_create(target, errno);
-    }
-    alpha::fail(target + ": cannot create a temporary file in " + dir.string());
-  }
-  ~TemporaryFile() {
-    if (!path_.empty()) ::unlink(path_.c_str());
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  const std::string& path() const { return path_; }
-
-  // Flushes the file to disk and renames it to the target.
-  void commit() {
-    const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0 || ::fsync(fd) != 0) {
-      const int err = errno;
-      if (fd >= 0) ::close(fd);
-      alpha::fail(target_ + ": write error: " + std::strerror(err));
-    }
-    ::close(fd);
-    if (::rename(path_.c_str(), target_.c_str()) != 0)
-      alpha::fail(target_ + ": cannot create: " + std::strerror(errno));
-    path_.clear();
-  }
-
-private:
-  std::string target_, path_;
-};
-
 }  // namespace
 
 void check_mesh_file_name(const std::string& path) {
   checked_format(path);
-  const fs::path dir = directory_of(path);
-  struct stat st {};
-  if (::stat(dir.c_str(), &st) != 0) fail_to_create(path, errno);
-  if (!S_ISDIR(st.st_mode)) fail_to_create(path, ENOTDIR);
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail_to_create(path, errno);
+  check_can_create(path);
 }
 
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {

@@ -64,16 +64,22 @@ case $case_name in
     expect_error "$data/weighted.xyz:6: expected 3 numbers, got 4"
     ;;
   pdb)
+    # 2796 atoms, less the ligand CNA (27): the regular triangulation of the
+    # atoms (ProtOr radius + probe 1.4 A).
     run delaunay "$pdb" --check --json
     expect_json_success
-    expect_json points 2796
+    expect_json points 2769
     expect_json valid true
     ;;
   pdb_weighted)
+    # Structure files are always weighted: --weighted changes nothing.
+    run delaunay "$pdb" --check --json
+    cp "$tmp/out" "$tmp/plain"
     run delaunay "$pdb" --weighted --check --json
     expect_json_success
-    expect_json points 2796
+    expect_json points 2769
     expect_json valid true
+    cmp -s "$tmp/out" "$tmp/plain" || fail "--weighted changed the result of a structure file"
     ;;
   missing_file)
     run delaunay "$tmp/missing.xyz" --json

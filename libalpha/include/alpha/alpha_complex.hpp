@@ -60,14 +60,18 @@ public:
   // rank is below this level are present at alpha_sq.
   Index level(double alpha_sq) const;
 
-  const Interval& vertex_interval(Index v) const { return vertex_[v]; }
-  const Interval& edge_interval(Index e) const { return edge_[e]; }
-  const Interval& triangle_interval(Index f) const { return triangle_[f]; }
-  Index cell_entry(Index c) const { return cell_[c]; }
+  Interval vertex_interval(Index v) const {
+    return {ranks_.vertex[v], vertex_bounds_[v].low, vertex_bounds_[v].high, vertex_attached_[v]};
+  }
+  Interval edge_interval(Index e) const {
+    return {ranks_.edge[e], edge_bounds_[e].low, edge_bounds_[e].high, edge_attached_[e]};
+  }
+  Interval triangle_interval(Index f) const;
+  Index cell_entry(Index c) const { return ranks_.cell[c]; }
 
   static Classification classify(const Interval& i, Index level);
   Classification classify_cell(Index c, Index level) const {
-    return cell_[c] < level ? Classification::interior : Classification::exterior;
+    return ranks_.cell[c] < level ? Classification::interior : Classification::exterior;
   }
   ClassCounts counts(Index level) const;
 
@@ -87,10 +91,18 @@ public:
   std::size_t memory_bytes() const;
 
 private:
+  // The interval records, by field: entry ranks (the filtration), mu_low and
+  // mu_high of vertices and edges, attached flags. A triangle's mu_low and
+  // mu_high are the ranks of its two cells, read from there.
+  struct Bounds {
+    Index low = kNever, high = kNever;
+  };
+
   const Triangulation* t_;
   Simplices simplices_;
-  std::vector<Interval> vertex_, edge_, triangle_;
-  std::vector<Index> cell_;       // entry rank of each cell
+  FiltrationRanks ranks_;
+  std::vector<Bounds> vertex_bounds_, edge_bounds_;
+  std::vector<bool> vertex_attached_, edge_attached_, triangle_attached_;
   // Global simplex ids: vertices, then edges from ids_.edges, triangles, cells.
   struct {
     Index edges = 0, triangles = 0, cells = 0;
@@ -101,6 +113,11 @@ private:
 
   SizeKernel size_kernel() const;
   Simplex simplex(Index global_id) const;
+  // Construction: the attached flags, the entry ranks of the simplices that
+  // enter at their own size, and the spectrum; then the bounds of the faces
+  // and the entries of the attached ones.
+  void rank_critical();
+  void bound_faces();
 };
 
 }  // namespace alpha

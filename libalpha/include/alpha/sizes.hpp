@@ -82,6 +82,9 @@ public:
   // distance |q - c|^2 - r^2 - w_q to the smallest orthogonal sphere of s is
   // strictly negative. Exact; a point on the sphere does not attach.
   bool attached(const Simplex& s, Index q);
+  // Whether any of the points qs attaches s: attached(s, q) for each q in
+  // turn, up to the first true, with the terms of s computed once.
+  bool attached_any(const Simplex& s, std::span<const Index> qs);
 
   const SizeStats& stats() const { return stats_; }
 

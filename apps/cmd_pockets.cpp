@@ -1,0 +1,189 @@
+// alphapocket pockets FILE [-o OUTDIR] [--probe R] [--min-volume V]
+//                          [--mesh ply|obj|off|stl] [--json]
+//
+// The product command: reads a structure file, builds the weighted alpha
+// complex of its atoms (ProtOr radius + probe), finds pockets, voids and
+// tunnels (molecule::find_cavities) and writes OUTDIR (default
+// <name>_pockets in the current directory):
+//   report.json   everything, schema in README.md
+//   pockets.csv   one row per pocket
+//   pockets.pml   PyMOL script        pockets.pdb  centres as pseudo-atoms
+//   meshes/       one mesh per pocket and void, and the molecule's surface
+// then prints a one-screen summary (or, with --json, the report) on stdout.
+//
+// Every file is written whole or not at all (temporary file + rename). The
+// output directory is created first, so that a bad OUTDIR fails at once;
+// it is removed again if the run fails before writing into it.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "alpha/error.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "molecule/cavities.hpp"
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/structure.hpp"
+
+#ifndef ALPHAPOCKET_VERSION
+#define ALPHAPOCKET_VERSION "unknown"
+#endif
+
+namespace alphapocket {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PocketsOptions {
+  InputOptions input;  // FILE, --probe and the structure selection
+  std::string output_dir;
+  double min_volume = molecule::CavityOptions{}.min_volume;
+  std::string mesh = "ply";
+  bool json = false;
+};
+
+// Pockets shown in the summary, and its width in columns.
+constexpr std::size_t kSummaryRows = 10;
+constexpr std::size_t kSummaryWidth = 100;
+
+// "1a26A.pdb" -> "1a26A_pockets"; "x.cif.gz" -> "x_pockets".
+std::string default_output_dir(const std::string& file) {
+  std::string name = fs::path(file).filename().string();
+  static const std::regex kStructureExtension(R"((\.(pdb|ent|cif|mmcif))?(\.gz)?$)", std::regex::icase);
+  name = std::regex_replace(name, kStructureExtension, "");
+  return (name.empty() ? std::string("structure") : name) + "_pockets";
+}
+
+// The structure file's path for the PyMOL script: absolute, so the script
+// runs from anywhere.
+std::string absolute_path(const std::string& file) {
+  std::error_code ec;
+  const fs::path p = fs::absolute(file, ec);
+  return ec ? file : p.lexically_normal().string();
+}
+
+// "A:TYR:42 A:SER:43 ..." cut to fit `width` columns, with "(+N)" for the
+// residues left out.
+std::string residue_list(const std::vector<molecule::Atom>& atoms, const molecule::Cavity& c, std::size_t width) {
+  const std::vector<alpha::Index> residues = molecule::residues_of(atoms, c.lining_atoms);
+  std::string out;
+  for (std::size_t k = 0; k < residues.size(); ++k) {
+    const std::string id = molecule::residue_id(atoms[residues[k]]);
+    const std::string more = " (+" + std::to_string(residues.size() - k) + ")";
+    if (out.size() + 1 + id.size() + (k + 1 < residues.size() ? more.size() : 0) > width) return out + more;
+    if (!out.empty()) out += ' ';
+    out += id;
+  }
+  return out;
+}
+
+void print_summary(const PocketsOptions& opt, const std::string& outdir, const molecule::Structure& structure,
+                   const molecule::MoleculeTotals& totals, const molecule::Cavities& cavities) {
+  const auto& pockets = cavities.pockets;
+  std::printf("%s: %s\n", opt.input.file.c_str(), molecule::summary(structure.report).c_str());
+  std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
+              totals.sa_area, totals.sa_volume);
+  std::printf("%zu pocket%s, %zu void%s, %zu tunnel%s; written to %s/\n", pockets.size(),
+              pockets.size() == 1 ? "" : "s", cavities.voids.size(), cavities.voids.size() == 1 ? "" : "s",
+              cavities.tunnels.size(), cavities.tunnels.size() == 1 ? "" : "s", outdir.c_str());
+  if (pockets.empty()) return;
+  std::printf("\nrank   score  SA vol A^3  depth A  mouths  lining residues\n");
+  const std::size_t prefix = 43;  // columns before the residues
+  for (std::size_t i = 0; i < std::min(pockets.size(), kSummaryRows); ++i) {
+    const molecule::Cavity& c = pockets[i];
+    std::printf("%4zu %7.3f %11.1f %8.1f %7zu  %s\n", i + 1, c.score, c.sa_volume, c.depth, c.mouths.size(),
+                residue_list(structure.atoms, c, kSummaryWidth - prefix).c_str());
+  }
+  if (pockets.size() > kSummaryRows)
+    std::printf("(top %zu of %zu pockets; all in %s/pockets.csv and report.json)\n", kSummaryRows, pockets.size(),
+                outdir.c_str());
+}
+
+int run_pockets(const PocketsOptions& opt) {
+  Stopwatch total_time;
+  const std::string& file = opt.input.file;
+  if (!molecule::is_structure_file(file))
+    throw std::runtime_error(file + ": not a structure file (.pdb .ent .cif .mmcif, optionally .gz)");
+  // First of all: a bad OUTDIR fails at once. If anything fails before a
+  // file is written, the directories created here are removed again.
+  const std::string outdir = opt.output_dir.empty() ? default_output_dir(file) : opt.output_dir;
+  molecule::PocketOutputDir out(outdir);
+  const molecule::Structure structure = read_structure_file(file, opt.input.structure);
+
+  molecule::CavityOptions options;  // the library's defaults but for these two
+  options.probe = opt.input.probe;
+  options.min_volume = opt.min_volume;
+  const molecule::PocketSearch search = [&] {
+    try {
+      return molecule::search_pockets(structure, options);
+    } catch (const alpha::Error& e) {
+      throw std::runtime_error(file + ": " + e.what());  // e.g. all atoms in one plane
+    }
+  }();
+  const molecule::Cavities& cavities = search.cavities;
+  spdlog::info("regular triangulation and alpha complex: {:.3f} s, {} atoms, {} finite cells", search.complex_seconds,
+               structure.atoms.size(), search.triangulation->num_finite_cells());
+  spdlog::info("cavities: {:.3f} s, {} pockets, {} voids, {} tunnels", search.cavities_seconds,
+               cavities.pockets.size(), cavities.voids.size(), cavities.tunnels.size());
+
+  molecule::PocketRun run;
+  run.file = file;
+  run.structure = &structure;
+  run.options = options;
+  run.version = ALPHAPOCKET_VERSION;
+  run.search = &search;
+  run.mesh_format = opt.mesh;
+
+  Stopwatch write_time;
+  const std::vector<std::string> written = out.write(run, absolute_path(file));
+  spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
+               total_time.seconds());
+
+  if (opt.json) {
+    std::puts(molecule::pocket_report(run).dump().c_str());
+  } else {
+    print_summary(opt, outdir, structure, search.totals, cavities);
+  }
+  flush_stdout();
+  return 0;
+}
+
+}  // namespace
+
+Subcommand add_pockets_command(CLI::App& app) {
+  auto opt = std::make_shared<PocketsOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "pockets", "Find the pockets, voids and tunnels of a structure; write report, CSV, PyMOL script, PDB and meshes");
+  sub->footer(
+      "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
+      "ProtOr radii. OUTDIR gets "
+      "report.json, pockets.csv, pockets.pml, pockets.pdb and meshes/; see README.md for their contents.");
+  add_input_options(*sub, opt->input);
+  // Only structure files: atoms need radii and residues.
+  sub->remove_option(sub->get_option("--weighted"));
+  sub->get_option("FILE")->description("Structure file: .pdb .ent .cif .mmcif, optionally .gz");
+  sub->add_option("-o,--output-dir", opt->output_dir,
+                  "Directory for the results (created if missing; default: <name>_pockets in the current "
+                  "directory)");
+  sub->add_option("--min-volume", opt->min_volume, "Drop pockets and voids whose SA volume (space the probe centre reaches) is below this, A^3")
+      ->capture_default_str()
+      ->check(finite_number())
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--mesh", opt->mesh, "Format of the mesh files")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ply", "obj", "off", "stl"}));
+  sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
+  return {sub, [opt] { return run_pockets(*opt); }};
+}
+
+}  // namespace alphapocket

@@ -1,0 +1,152 @@
+// alphapocket surface FILE [--probe R] [--json] [--per-atom]
+//
+// Solvent-accessible surface (SAS) area and volume of a molecule: the union
+// of its atom balls, radius = ProtOr radius + probe, measured analytically
+// over the weighted alpha complex at alpha_sq = 0 (alpha::UnionOfBalls), so
+// there is no resolution to choose (unlike Lee-Richards slices or
+// Shrake-Rupley points). With --per-atom, the SAS area of every atom. A
+// point file with --weighted gives the union of its balls.
+//
+// The solvent-excluded (molecular) volume is not computed yet: it is null.
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "alpha/union_of_balls.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "molecule/radii.hpp"
+#include "molecule/structure.hpp"
+
+namespace alphapocket {
+namespace {
+
+struct SurfaceOptions {
+  InputOptions input;
+  bool json = false;
+  bool per_atom = false;
+};
+
+// The balls of FILE, and for a structure file its atoms (names for
+// --per-atom).
+struct Balls {
+  PointSet set;
+  std::optional<std::vector<molecule::Atom>> atoms;
+};
+
+Balls read_balls(const InputOptions& opt) {
+  Balls b;
+  if (!molecule::is_structure_file(opt.file)) {
+    if (!opt.weighted)
+      throw std::runtime_error(opt.file +
+                               ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
+    b.set = read_input(opt);
+    return b;
+  }
+  Stopwatch read_time;
+  molecule::Structure structure = read_structure_file(opt.file, opt.structure);
+  b.set = atom_balls(structure.atoms, opt.probe);
+  spdlog::info("read {} atoms in {:.3f} s: ball radius = {} radius + probe {} A", structure.atoms.size(),
+               read_time.seconds(), molecule::kRadiusTable, opt.probe);
+  b.atoms = std::move(structure.atoms);
+  return b;
+}
+
+nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
+  nlohmann::ordered_json j;
+  j["serial"] = a.serial;
+  j["name"] = a.name;
+  j["residue"] = a.residue_name;
+  j["seq_num"] = a.seq_num;
+  j["icode"] = a.icode ? std::string(1, a.icode) : std::string();
+  j["chain"] = a.chain;
+  j["area"] = area;
+  return j;
+}
+
+int run_surface(const SurfaceOptions& opt) {
+  const Balls balls = read_balls(opt.input);
+  const std::size_t n = balls.set.points.size();
+  Stopwatch build_time;
+  const std::unique_ptr<alpha::Triangulation> t = triangulate(balls.set, opt.input.file);
+  const alpha::AlphaComplex complex(*t);
+  const double build_seconds = build_time.seconds();
+  Stopwatch measure_time;
+  const alpha::UnionOfBalls u(complex);
+  spdlog::info("regular triangulation and alpha complex: {:.3f} s; union of balls: {:.3f} s ({} hidden balls)",
+               build_seconds, measure_time.seconds(), t->num_hidden());
+  const auto areas = u.ball_areas();
+  const bool structure = balls.atoms.has_value();
+
+  if (opt.json) {
+    nlohmann::ordered_json j;
+    j["atoms"] = n;
+    j["probe"] = structure ? nlohmann::ordered_json(opt.input.probe) : nlohmann::ordered_json(nullptr);
+    j["sa_area"] = u.area();
+    j["sa_volume"] = u.volume();
+    j["ms_volume"] = nullptr;
+    j["radii"] = structure ? std::string(molecule::kRadiusTable) : std::string("file");
+    if (opt.per_atom) {
+      j["per_atom"] = nlohmann::ordered_json::array();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (structure) {
+          j["per_atom"].push_back(atom_json((*balls.atoms)[i], areas[i]));
+        } else {
+          nlohmann::ordered_json p;
+          p["index"] = i;
+          p["area"] = areas[i];
+          j["per_atom"].push_back(p);
+        }
+      }
+    }
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("%s", fmt::format("{}: {} {}, {}\n", opt.input.file, n, structure ? "atoms" : "balls",
+                                  structure ? fmt::format("{} radii + probe {} A", molecule::kRadiusTable,
+                                                          opt.input.probe)
+                                            : std::string("radii from the file"))
+                          .c_str());
+    std::printf("%s", fmt::format("solvent-accessible area    {:.3f} A^2\nsolvent-accessible volume  {:.3f} A^3\n"
+                                  "solvent-excluded volume    not computed\n",
+                                  u.area(), u.volume())
+                          .c_str());
+    if (opt.per_atom) {
+      std::printf("%s", structure ? "serial name residue seq_num chain area\n" : "index area\n");
+      for (std::size_t i = 0; i < n; ++i) {
+        if (structure) {
+          const molecule::Atom& a = (*balls.atoms)[i];
+          std::printf("%s", fmt::format("{} {} {} {}{} {} {:.3f}\n", a.serial, a.name, a.residue_name, a.seq_num,
+                                        a.icode ? std::string(1, a.icode) : std::string(), a.chain, areas[i])
+                                .c_str());
+        } else {
+          std::printf("%s", fmt::format("{} {:.3f}\n", i, areas[i]).c_str());
+        }
+      }
+    }
+  }
+  flush_stdout();
+  return 0;
+}
+
+}  // namespace
+
+Subcommand add_surface_command(CLI::App& app) {
+  auto opt = std::make_shared<SurfaceOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "surface",
+      "Solvent-accessible surface area and volume of the union of the atom balls (ProtOr radius + probe), "
+      "analytically from the weighted alpha complex; per atom with --per-atom");
+  add_input_options(*sub, opt->input);
+  sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
+  sub->add_flag("--per-atom", opt->per_atom, "Also print the SAS area of every atom (ball)");
+  return {sub, [opt] { return run_surface(*opt); }};
+}
+
+}  // namespace alphapocket

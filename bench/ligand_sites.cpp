@@ -1,0 +1,330 @@
+// Ligand-binding-site benchmark of `alphapocket pockets`: how often a
+// top-ranked pocket is where a ligand binds, on holo structures whose
+// ligands were removed before the search (the pockets command drops hetero
+// groups by default).
+//
+//   ligand_sites [options] [DATASET] [-- ALPHAPOCKET-OPTIONS...]
+//
+//   DATASET            directory of structure files and one .ds file listing,
+//                      per file, its ligand codes (P2Rank's format:
+//                      "HEADER: protein ligand_codes", then "1abcA.pdb  ATP,MG");
+//                      default: ../shared/data/pockets-dev next to the source tree
+//   --alphapocket EXE  the executable to run (default: the one built with this)
+//   --reports DIR      score existing results instead of running anything:
+//                      DIR/<name>/report.json for each structure <name>.pdb
+//   --keep DIR         run into DIR/<name>/ and keep the results (default: a
+//                      temporary directory, removed at the end)
+//   --details          one line per structure: pockets, time, rank of the
+//                      first hit per ligand
+//   --json             the figures as one JSON object on stdout instead of the table
+//   -- ...             further options for `alphapocket pockets` (e.g. --probe 1.6)
+//
+// REUSE (e.g. to tune the pocket score): generate reports with any build or
+// options, `alphapocket pockets F -o DIR/<name>` per structure, then
+// `ligand_sites --reports DIR --json` scores them without running anything;
+// only "pockets"[i]["center"] of report.json, in rank order, is read.
+//
+// Ligands (the dataset's definition, /work/shared/data/README.md): HETATM
+// residues whose name is in the file's code list, hydrogens left out;
+// residues closer than 1.7 A to each other (any atom pair) are merged into
+// one ligand (glycans, peptides); its centre is the mean of its heavy atoms.
+// A pocket HITS a ligand by DCC when its centre lies within 4 A of the
+// ligand's centre, by DCA when within 4 A of any ligand atom. Top-k: some
+// pocket of rank <= k hits; top-(n+2): k = number of ligands of the
+// structure + 2. Figures are fractions of all ligands. Runtime is the wall
+// clock of one `alphapocket pockets` process (reading, computing, writing
+// every output file), median over the structures.
+//
+// fpocket 4.0's figures on the same 40 structures and 51 ligands, scored
+// the same way (from the dataset's README), are printed alongside.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <stdlib.h>  // mkdtemp
+
+#include <nlohmann/json.hpp>
+
+#include "molecule/structure.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kHitDistance = 4.0;   // A, DCC and DCA
+constexpr double kMergeDistance = 1.7; // A, residues of one ligand
+
+// fpocket 4.0 on pockets-dev (the dataset's README).
+struct Peer {
+  double dcc[3], dca[3];  // top-1, top-3, top-(n+2)
+  double pockets, seconds;
+};
+constexpr Peer kFpocket{{0.431, 0.569, 0.569}, {0.627, 0.804, 0.804}, 13, 0.63};
+
+struct Options {
+  fs::path dataset = fs::path(ALPHAPOCKET_SOURCE_DIR) / ".." / "shared" / "data" / "pockets-dev";
+  std::string alphapocket = ALPHAPOCKET_EXE;
+  fs::path reports, keep;
+  bool details = false, json = false;
+  std::vector<std::string> pass_through;
+};
+
+struct Ligand {
+  std::string name;  // residue names of its parts, e.g. "NAD" or "MAN+GLC"
+  std::vector<alpha::Vec3> atoms;
+  alpha::Vec3 center{};
+};
+
+double distance(const alpha::Vec3& a, const alpha::Vec3& b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// The .ds file of the dataset: file name -> ligand codes.
+std::vector<std::pair<std::string, std::vector<std::string>>> read_ds(const fs::path& dataset) {
+  fs::path ds;
+  for (const auto& e : fs::directory_iterator(dataset))
+    if (e.path().extension() == ".ds") {
+      if (!ds.empty()) throw std::runtime_error(dataset.string() + ": more than one .ds file");
+      ds = e.path();
+    }
+  if (ds.empty()) throw std::runtime_error(dataset.string() + ": no .ds file listing the ligand codes");
+  std::ifstream in(ds);
+  std::vector<std::pair<std::string, std::vector<std::string>>> entries;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string file, codes;
+    if (!(words >> file) || file[0] == '#' || file == "HEADER:") continue;
+    if (!(words >> codes)) throw std::runtime_error(ds.string() + ": no ligand codes for " + file);
+    std::vector<std::string> list;
+    std::istringstream split(codes);
+    for (std::string code; std::getline(split, code, ',');) list.push_back(code);
+    entries.emplace_back(file, list);
+  }
+  if (entries.empty()) throw std::runtime_error(ds.string() + ": no entries");
+  return entries;
+}
+
+// The ligands of a structure file, by the dataset's definition.
+std::vector<Ligand> read_ligands(const fs::path& file, const std::vector<std::string>& codes) {
+  molecule::StructureOptions all;  // hetero groups kept: a peptide ligand may count as polymer
+  all.keep_hetero = true;
+  const molecule::Structure s = molecule::read_structure(file.string(), all);
+  // Residues of the listed HETATM records.
+  std::map<std::tuple<std::string, int, char, std::string>, Ligand> residues;
+  for (const molecule::Atom& a : s.atoms) {
+    if (!a.hetero || std::find(codes.begin(), codes.end(), a.residue_name) == codes.end()) continue;
+    Ligand& r = residues[{a.chain, a.seq_num, a.icode, a.residue_name}];
+    r.name = a.residue_name;
+    r.atoms.push_back(a.position);
+  }
+  // Merge residues closer than kMergeDistance (single linkage).
+  std::vector<Ligand> parts;
+  for (auto& [key, r] : residues) parts.push_back(std::move(r));
+  std::vector<std::size_t> group(parts.size());
+  std::iota(group.begin(), group.end(), std::size_t(0));
+  const auto find = [&](std::size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  const auto close = [&](const Ligand& a, const Ligand& b) {
+    for (const auto& p : a.atoms)
+      for (const auto& q : b.atoms)
+        if (distance(p, q) < kMergeDistance) return true;
+    return false;
+  };
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    for (std::size_t j = i + 1; j < parts.size(); ++j)
+      if (close(parts[i], parts[j])) group[std::max(find(i), find(j))] = std::min(find(i), find(j));
+  std::vector<Ligand> ligands;
+  std::map<std::size_t, std::size_t> index;  // group root -> ligand
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const auto [it, fresh] = index.try_emplace(find(i), ligands.size());
+    if (fresh) ligands.emplace_back();
+    Ligand& l = ligands[it->second];
+    if (!l.name.empty()) l.name += '+';
+    l.name += parts[i].name;
+    l.atoms.insert(l.atoms.end(), parts[i].atoms.begin(), parts[i].atoms.end());
+  }
+  for (Ligand& l : ligands) {
+    for (const auto& p : l.atoms) l.center.x += p.x, l.center.y += p.y, l.center.z += p.z;
+    const double n = double(l.atoms.size());
+    l.center = {l.center.x / n, l.center.y / n, l.center.z / n};
+  }
+  return ligands;
+}
+
+std::vector<alpha::Vec3> pocket_centers(const fs::path& report_file) {
+  std::ifstream in(report_file);
+  if (!in) throw std::runtime_error(report_file.string() + ": cannot open");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  std::vector<alpha::Vec3> centers;
+  for (const auto& p : report.at("pockets")) {
+    const auto& c = p.at("center");
+    centers.push_back({c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>()});
+  }
+  return centers;
+}
+
+// Rank (1-based) of the first pocket hitting the ligand, 0 for none.
+std::size_t first_hit(const std::vector<alpha::Vec3>& centers, const Ligand& l, bool dca) {
+  for (std::size_t i = 0; i < centers.size(); ++i) {
+    double d = distance(centers[i], l.center);
+    if (dca)
+      for (const auto& p : l.atoms) d = std::min(d, distance(centers[i], p));
+    if (d <= kHitDistance) return i + 1;
+  }
+  return 0;
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  bool dataset_given = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::runtime_error(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--") {
+      o.pass_through.assign(argv + i + 1, argv + argc);
+      break;
+    } else if (a == "--alphapocket") {
+      o.alphapocket = value();
+    } else if (a == "--reports") {
+      o.reports = value();
+    } else if (a == "--keep") {
+      o.keep = value();
+    } else if (a == "--details") {
+      o.details = true;
+    } else if (a == "--json") {
+      o.json = true;
+    } else if (a == "-h" || a == "--help") {
+      std::puts("usage: ligand_sites [--alphapocket EXE] [--reports DIR] [--keep DIR] [--details] [--json] [DATASET] "
+                "[-- ALPHAPOCKET-OPTIONS...]\n(see the comment at the top of bench/ligand_sites.cpp)");
+      std::exit(0);
+    } else if (!a.empty() && a[0] != '-' && !dataset_given) {
+      o.dataset = a;
+      dataset_given = true;
+    } else {
+      throw std::runtime_error("unknown argument '" + a + "' (see --help)");
+    }
+  }
+  o.dataset = o.dataset.lexically_normal();
+  return o;
+}
+
+int run(const Options& o) {
+  const auto entries = read_ds(o.dataset);
+  fs::path work = o.reports.empty() ? o.keep : o.reports;
+  const bool temporary = work.empty();
+  if (temporary) {
+    std::string tmpl = (fs::temp_directory_path() / "ligand_sites_XXXXXX").string();
+    if (!::mkdtemp(tmpl.data())) throw std::runtime_error("cannot create a temporary directory");
+    work = tmpl;
+  }
+  fs::create_directories(work);
+  std::string extra;
+  for (const std::string& a : o.pass_through) extra += " " + shell_quote(a);
+
+  std::array<std::size_t, 3> dcc{}, dca{};  // hits at top-1, top-3, top-(n+2)
+  std::size_t ligands_total = 0;
+  std::vector<double> pockets_per_structure, seconds;
+  for (const auto& [file, codes] : entries) {
+    const fs::path structure = o.dataset / file;
+    const std::string name = structure.stem().string();
+    const fs::path outdir = work / name;
+    if (o.reports.empty()) {
+      const std::string command = shell_quote(o.alphapocket) + " -q pockets " + shell_quote(structure.string()) +
+                                  " -o " + shell_quote(outdir.string()) + extra + " > /dev/null";
+      const auto start = std::chrono::steady_clock::now();
+      if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
+      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    const std::vector<alpha::Vec3> centers = pocket_centers(outdir / "report.json");
+    const std::vector<Ligand> ligands = read_ligands(structure, codes);
+    if (ligands.empty()) std::fprintf(stderr, "warning: %s: none of its listed ligands found\n", file.c_str());
+    pockets_per_structure.push_back(double(centers.size()));
+    ligands_total += ligands.size();
+
+    std::string detail;
+    for (const Ligand& l : ligands) {
+      const std::size_t by_center = first_hit(centers, l, false), by_atom = first_hit(centers, l, true);
+      const std::array<std::size_t, 3> k{1, 3, ligands.size() + 2};
+      for (int t = 0; t < 3; ++t) {
+        dcc[t] += by_center && by_center <= k[t];
+        dca[t] += by_atom && by_atom <= k[t];
+      }
+      detail += "  " + l.name + " DCC " + (by_center ? std::to_string(by_center) : "-") + " DCA " +
+                (by_atom ? std::to_string(by_atom) : "-");
+    }
+    if (o.details) {
+      char time[32] = "";
+      if (o.reports.empty()) std::snprintf(time, sizeof time, " %6.2f s", seconds.back());
+      std::fprintf(stderr, "%-10s %3zu pockets%s%s\n", name.c_str(), centers.size(), time, detail.c_str());
+    }
+  }
+  if (temporary) fs::remove_all(work);
+
+  const auto fraction = [&](std::size_t hits) { return ligands_total ? double(hits) / double(ligands_total) : 0.0; };
+  const double pockets_median = median(pockets_per_structure), seconds_median = median(seconds);
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["structures"] = entries.size();
+    j["ligands"] = ligands_total;
+    j["dcc"] = {fraction(dcc[0]), fraction(dcc[1]), fraction(dcc[2])};
+    j["dca"] = {fraction(dca[0]), fraction(dca[1]), fraction(dca[2])};
+    j["pockets_median"] = pockets_median;
+    j["seconds_median"] = seconds.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(seconds_median);
+    std::puts(j.dump().c_str());
+    return 0;
+  }
+  std::printf("ligand-binding sites: %zu structures, %zu ligands (%s)\n", entries.size(), ligands_total,
+              o.dataset.filename().c_str());
+  std::printf("%-26s %7s %7s %9s   %s\n", "", "top-1", "top-3", "top-(n+2)", "fpocket 4.0");
+  std::printf("%-26s %7.3f %7.3f %9.3f   %.3f %.3f %.3f\n", "DCC <= 4 A", fraction(dcc[0]), fraction(dcc[1]),
+              fraction(dcc[2]), kFpocket.dcc[0], kFpocket.dcc[1], kFpocket.dcc[2]);
+  std::printf("%-26s %7.3f %7.3f %9.3f   %.3f %.3f %.3f\n", "DCA <= 4 A", fraction(dca[0]), fraction(dca[1]),
+              fraction(dca[2]), kFpocket.dca[0], kFpocket.dca[1], kFpocket.dca[2]);
+  std::printf("%-26s %7.1f %27.0f\n", "pockets per structure", pockets_median, kFpocket.pockets);
+  if (!seconds.empty())
+    std::printf("%-26s %7.2f %27.2f\n", "seconds per structure", seconds_median, kFpocket.seconds);
+  std::printf("(medians over the structures; seconds: wall clock of one `alphapocket pockets` run, all files written)\n");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(parse(argc, argv));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ERROR: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,89 @@
+// The molecule API on a real protein: read a structure, find its cavities,
+// and see where its bound ligand sits among them.
+//
+//   molecule_pockets [STRUCTURE [OUTDIR]]
+//        (defaults: examples/data/1a26A.pdb, and no files written)
+//
+// 1A26 chain A (poly(ADP-ribose) polymerase catalytic fragment) comes with
+// the inhibitor carba-NAD (residue CNA) bound. The structure reader drops
+// hetero groups from the atoms the cavities are computed on, but returns
+// them on their own (Structure::hetero_groups), so the ligand's atoms can be
+// compared with the pockets found on the empty protein. With OUTDIR, all the
+// files of `alphapocket pockets` are written there (PocketOutputDir).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/structure.hpp"
+
+namespace {
+
+double distance(const alpha::Vec3& a, const alpha::Vec3& b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+int run(const std::string& file, const std::string& outdir) {
+  // 1. The atoms: waters, hydrogens and hetero groups left out, ProtOr radii.
+  const molecule::Structure structure = molecule::read_structure(file);
+  std::printf("%s: %s\n", file.c_str(), molecule::summary(structure.report).c_str());
+
+  // 2. Cavities of the weighted alpha complex (radius + 1.4 A probe) at alpha_sq = 0.
+  molecule::CavityOptions options;
+  options.probe = 1.4;
+  const molecule::PocketSearch search = molecule::search_pockets(structure, options);
+  const molecule::Cavities& cavities = search.cavities;
+  std::printf("solvent-accessible area %.0f A^2, volume %.0f A^3; %zu pockets, %zu voids, %zu tunnels\n",
+              search.totals.sa_area, search.totals.sa_volume, cavities.pockets.size(), cavities.voids.size(),
+              cavities.tunnels.size());
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.pockets.size()); ++i) {
+    const molecule::Cavity& p = cavities.pockets[i];
+    const auto residues = molecule::residues_of(structure.atoms, p.lining_atoms);
+    std::printf("pocket %zu: score %.2f, %zu mouth(s), depth %.1f A, %zu lining residues, first %s\n", i + 1, p.score,
+                p.mouths.size(), p.depth, residues.size(), molecule::residue_id(structure.atoms[residues[0]]).c_str());
+  }
+
+  // 3. Each ligand against the pockets: the first pocket (by rank) whose
+  //    centre is within 4 A of a ligand atom (the DCA criterion).
+  for (const molecule::HeteroGroup& ligand : structure.hetero_groups) {
+    std::size_t hit = 0;
+    for (std::size_t i = 0; i < cavities.pockets.size() && !hit; ++i)
+      for (const molecule::Atom& a : ligand.atoms)
+        if (distance(a.position, cavities.pockets[i].center) <= 4.0) {
+          hit = i + 1;
+          break;
+        }
+    const std::string where = hit ? "in pocket " + std::to_string(hit) : "in no pocket (no centre within 4 A)";
+    std::printf("ligand %s %s:%d (%zu heavy atoms): %s\n", ligand.residue_name.c_str(), ligand.chain.c_str(),
+                ligand.seq_num, ligand.atoms.size(), where.c_str());
+  }
+
+  // 4. Optionally the files of `alphapocket pockets`.
+  if (!outdir.empty()) {
+    molecule::PocketRun run;
+    run.file = file;
+    run.structure = &structure;
+    run.options = options;
+    run.version = "example";
+    run.search = &search;
+    run.mesh_format = "ply";
+    molecule::PocketOutputDir out(outdir);
+    std::printf("wrote %zu files to %s\n", out.write(run, file).size(), outdir.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc > 1 ? argv[1] : "examples/data/1a26A.pdb", argc > 2 ? argv[2] : "");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ERROR: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,154 @@
+// Cavities of a molecule found on the weighted alpha complex of its atoms
+// (balls of radius r_i + probe, alpha_sq = 0: the solvent-accessible model).
+//
+// Pockets and voids are regions of EMPTY tetrahedra (not in the complex at
+// alpha_sq = 0), grouped by the discrete flow of Edelsbrunner, Facello &
+// Liang (1998) (alpha/discrete_flow.hpp): an empty tetrahedron flows into
+// its neighbour across a facet that separates it from its orthocenter,
+// when that facet is empty too. Tetrahedra that flow to the outside (the
+// infinite cells) are outside; the others drain to finite sinks, and sink
+// regions joined through empty facets form one region (a CASTp pocket or
+// void). A region with empty facets towards the outside is a pocket; one
+// without is a VOID (an enclosed cavity: the voids are counted by b2).
+//
+// A CASTp pocket can be a long groove holding several binding sites, so it
+// is split into POCKETS where it narrows (alpha/persistent_basins.hpp): the
+// basins of its largest empty spheres, merged unless the radius of a
+// basin's widest orthosphere exceeds that of the passage into its
+// neighbour by at least CavityOptions::split_persistence. Each pocket
+// opens to the outside or to a neighbouring pocket of the same region
+// through its mouths. With an infinite split_persistence the pockets are
+// exactly CASTp's.
+//
+// TUNNELS are 1-cycles of the complex alive at alpha_sq = 0 that die later.
+//
+// Too small to hold the probe: sa_volume is the space the probe's centre
+// can reach in the cavity (points farther than r_i + probe from every atom
+// centre). Cavities whose sa_volume is below CavityOptions::min_volume are
+// dropped (default 1 A^3: below that the probe can only rattle by a
+// fraction of an Angstrom, a dent rather than a cavity; on pockets-dev
+// this halves the pockets and loses no ligand site). With min_volume = 0
+// the voids are exactly the b2 classes at alpha_sq = 0.
+//
+// All values here are in Angstrom (lengths), Angstrom^2 and Angstrom^3, or
+// squared Angstrom for alpha_sq values (as everywhere in alphapocket).
+#pragma once
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/geometry.hpp"
+
+namespace molecule {
+
+// One mouth: a connected set (through shared edges) of the empty triangles
+// a pocket shares with the outside, or with a neighbouring pocket split
+// from the same region.
+struct Mouth {
+  std::vector<alpha::Index> triangles;  // alpha::Simplices triangle ids, sorted
+  // Solvent-accessible area of the opening: the triangles' area not covered
+  // by the inflated balls' discs in their planes (fractional
+  // inclusion-exclusion per triangle, as for the cells), A^2.
+  double area = 0;
+  bool to_outside = true;  // false: opens into a neighbouring pocket
+};
+
+struct Cavity {
+  std::vector<alpha::Index> cells;  // empty tetrahedra (triangulation cell ids), sorted
+  std::vector<Mouth> mouths;        // empty for a void; outside mouths first
+  // Empty space of the cells not covered by the probe-inflated balls (the
+  // space the probe's centre can reach), A^3, from the per-cell fractional
+  // inclusion-exclusion of alpha::UnionOfBalls (exact in sum; per cell
+  // exact when no ball piece crosses the cell's facets).
+  double sa_volume = 0;
+  double sa_area = 0;  // area of the probe-inflated spheres lining the cavity, A^2 (same split)
+  // The same with the atoms' own (van der Waals) balls: NOT COMPUTED yet
+  // (quiet NaN). The cells are those of the inflated complex; splitting
+  // the van der Waals union over them needs that union's own dual complex,
+  // whose cells differ when radii differ.
+  double ms_volume = std::numeric_limits<double>::quiet_NaN();  // A^3
+  double ms_area = std::numeric_limits<double>::quiet_NaN();    // A^2
+  // Largest distance of a cell centroid from the outside mouths of the
+  // cavity's region (0 for voids), A.
+  double depth = 0;
+  alpha::Vec3 center{};  // the cells' centroids weighted by their free volume
+  std::vector<alpha::Index> lining_atoms;  // input point (atom) indices of the cells' vertices, sorted
+  // Squared radius of the largest probe the cavity can hold: the largest
+  // orthosphere size among its cells (alpha_sq of the cell that fills last).
+  double max_alpha_sq = 0;
+  // The cavity on the spectrum (from the dimension-2 persistence pair whose
+  // killing cell is the cavity's last cell to fill): it is a closed void
+  // for close_alpha_sq <= alpha_sq < fill_alpha_sq. A void has
+  // close_alpha_sq <= 0 (how far the balls can shrink before it opens);
+  // a pocket closes at some alpha_sq > 0 if its mouths seal before its
+  // cells fill, and has close_alpha_sq == fill_alpha_sq if it never does.
+  // fill_alpha_sq == max_alpha_sq (the last cell's size).
+  double close_alpha_sq = 0;
+  double fill_alpha_sq = 0;
+  double mouth_area = 0;  // sum of the mouths' areas, A^2 (0 for a void)
+  // Share of the cavity's wall that is molecule rather than opening:
+  // sa_area / (sa_area + mouth_area); 1 for a void.
+  double buriedness = 1;
+  // Atoms (input points) within CavityOptions::burial_radius of the centre:
+  // how deep in the molecule the cavity lies (P2Rank's "protrusion").
+  std::size_t burial_atoms = 0;
+  double score = 0;  // ranking score, larger is better (see cavity_score)
+};
+
+struct Tunnel {
+  double birth_alpha_sq = 0;  // when the 1-cycle forms (<= 0: present at alpha_sq = 0)
+  double death_alpha_sq = 0;  // when its killing triangle enters (> 0)
+  alpha::Index bottleneck_triangle = alpha::kNone;  // the killing triangle (Simplices id)
+  // Radius of the largest probe passing through the bottleneck: at the
+  // death the triangle's balls, grown to radius sqrt((r_i + probe)^2 +
+  // death), just close it, while a probe of radius rho reaches within
+  // r_i + rho of atom i; so rho = min over the triangle's atoms of
+  // sqrt((r_i + probe)^2 + death) - r_i. Exact for equal radii (then the
+  // grown balls are the probe's excluded balls: rho = sqrt(death) for
+  // unweighted points), a lower bound otherwise; >= probe, A.
+  double bottleneck_radius = 0;
+  std::vector<alpha::Index> lining_atoms;  // vertices of the bottleneck triangle, sorted
+};
+
+struct Cavities {
+  std::vector<Cavity> pockets;  // ranked: best first
+  std::vector<Cavity> voids;    // ranked: best first
+  std::vector<Tunnel> tunnels;  // by decreasing death_alpha_sq (widest bottleneck first)
+};
+
+struct CavityOptions {
+  double probe = 1.4;       // A; the complex must be built with radii r_i + probe
+  double min_volume = 1;    // A^3; pockets and voids with sa_volume below it are dropped
+  // A (orthosphere radius): a region's basins stay separate pockets when
+  // their widest sphere's radius exceeds the passage's by this much;
+  // infinity: CASTp's whole pockets. Calibrated on pockets-dev.
+  double split_persistence = 0.25;
+  double burial_radius = 14;  // A, for Cavity::burial_atoms
+};
+
+// Cavities of the alpha complex `ac` of the atoms; radii[i] is the van der
+// Waals radius of input point i (the complex's weights must be (radii[i] +
+// probe)^2). Pockets and voids are ranked by cavity_score. Deterministic;
+// throws alpha::Error on inconsistent input (radii count, weights, options).
+Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
+                       const CavityOptions& options);
+
+// The ranking score of a cavity (larger is better): how likely it is to
+// bind a drug-like ligand, from its size and its burial,
+//   score = sa_volume * (burial_atoms / 600)^12,
+// the free space for a ligand weighted steeply by how deep in the protein
+// it lies: 600 is about the number of heavy atoms that fill a 14 A sphere
+// inside a protein (one per ~19 A^3), so the ratio is the share of the
+// burial sphere the molecule fills, and 10% fewer atoms around a cavity
+// cost it a factor 3.5. The exponent is calibrated on pockets-dev (DCC
+// top-1 0.41-0.47 for exponents 8-12); burial outweighs size because
+// binding sites are the buried parts of the surface.
+double cavity_score(const Cavity& cavity);
+
+// Sets each cavity's score and sorts by decreasing score (ties: the order
+// given, which find_cavities makes deterministic).
+void rank_cavities(std::vector<Cavity>& cavities);
+
+}  // namespace molecule

@@ -1,0 +1,51 @@
+// The output directory of `alphapocket pockets`:
+//
+//   report.json   every result (pocket_report), indented
+//   pockets.csv   one row per pocket (pockets_csv)
+//   pockets.pml   PyMOL script (pymol_script)
+//   pockets.pdb   cavity centres and sinks as pseudo-atoms (pocket_pdb)
+//   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
+//                 molecule.<fmt> (molecule_mesh)
+//
+// Each file appears whole or not at all (write_file_atomically,
+// write_mesh_file). Mesh files of an earlier run in meshes/ that this run
+// does not write again (it found fewer cavities, or wrote another format)
+// are removed, so the directory always describes one run; only names of
+// the form above are touched.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "molecule/pocket_report.hpp"
+
+namespace molecule {
+
+class PocketOutputDir {
+public:
+  // Creates the directory and its meshes/ subdirectory where missing and
+  // checks that files can be created there; throws alpha::Error with one
+  // line naming the directory otherwise.
+  explicit PocketOutputDir(const std::string& path);
+  // Removes the directories the constructor created if no file was written
+  // into them (the run failed before writing).
+  ~PocketOutputDir();
+  PocketOutputDir(const PocketOutputDir&) = delete;
+  PocketOutputDir& operator=(const PocketOutputDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+
+  // Writes every file; structure_path is what pockets.pml loads. Returns
+  // the names written, relative to the directory.
+  std::vector<std::string> write(const PocketRun& run, const std::string& structure_path);
+
+private:
+  std::filesystem::path path_;
+  std::vector<std::filesystem::path> created_;
+  bool written_ = false;
+
+  void create(const std::filesystem::path& dir);
+  void remove_stale_meshes(const std::vector<std::string>& written) const;
+};
+
+}  // namespace molecule

@@ -1,0 +1,28 @@
+// pockets.pdb: the cavities as pseudo-atoms in PDB format, fpocket-style,
+// for ChimeraX, PyMOL, VMD or any other structure viewer (open it together
+// with the structure: the coordinates are the same).
+//
+// One residue per cavity, residue name STP, residue number = its rank,
+// chain P for pockets and V for voids; its HETATM records are
+//   CEN  the cavity's centre (Cavity::center), B-factor 0;
+//   SNK  one per sink of the cavity's flow (an empty tetrahedron that
+//        drains nowhere, see alpha::DiscreteFlow): the orthocentre of the
+//        tetrahedron, B-factor = the radius of its orthosphere in A (0 when
+//        negative), i.e. how far the cavity widens there beyond the
+//        probe-inflated atoms.
+// Element column C. REMARK lines at the top say what the file holds; it
+// ends with END.
+#pragma once
+#include <string>
+
+#include "alpha/alpha_complex.hpp"
+#include "molecule/cavities.hpp"
+
+namespace molecule {
+
+// The file's text; `title` goes into the first REMARK. Throws alpha::Error
+// when a coordinate does not fit the PDB columns (|x| >= 1e4 roughly) or
+// there are more than 99999 pseudo-atoms or 9999 cavities of one kind.
+std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
+
+}  // namespace molecule

@@ -1,0 +1,51 @@
+// The machine-readable results of `alphapocket pockets`: report.json (every
+// number of the run, schema documented in README.md, section "report.json")
+// and pockets.csv (one row per pocket, for spreadsheets and scripts).
+//
+// Lengths in A, areas in A^2, volumes in A^3, rounded to 3 decimals (1e-3 A
+// is far below the precision of any structure); scores to 4 decimals;
+// values named *_alpha_sq are squared radii, kept at full precision (they
+// are critical values of the spectrum one may pass back to --alpha-sq).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "alpha/geometry.hpp"
+#include "molecule/cavities.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/structure.hpp"
+
+namespace molecule {
+
+// Everything one run produced. Pointers are borrowed; atom indices of the
+// cavities (Cavity::lining_atoms) are indices into structure->atoms.
+struct PocketRun {
+  std::string file;  // the input, as given
+  const Structure* structure = nullptr;
+  CavityOptions options;
+  std::string version;  // of alphapocket
+  const PocketSearch* search = nullptr;
+  std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
+};
+
+// "A:TYR:42", with the insertion code appended ("A:TYR:42B"): the residue
+// of an atom as pockets.csv and report.json name it.
+std::string residue_id(const Atom& atom);
+
+// The residues of the given atoms (indices into atoms, any order), each
+// once, in order of their first atom in the file: one representative atom
+// index per residue.
+std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices);
+
+// Mesh file of a cavity inside the output directory, e.g.
+// "meshes/pocket_1.ply"; kind is "pocket" or "void". The molecule's is
+// "meshes/molecule.<format>".
+std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format);
+std::string molecule_mesh_path(const std::string& format);
+
+nlohmann::ordered_json pocket_report(const PocketRun& run);
+std::string pockets_csv(const PocketRun& run);
+
+}  // namespace molecule

@@ -1,0 +1,130 @@
+// Macromolecular structure files (PDB, mmCIF, either optionally gzipped),
+// read through gemmi, reduced to the atoms a cavity search works on.
+//
+// The format is found from the content, not the name: gzip by its magic
+// bytes, mmCIF by its leading "data_" block, PDB by ATOM/HETATM records.
+// One model is read (the first by default). From it, in this order:
+//
+//   1. chains not selected are dropped (all chains by default);
+//   2. alternate locations: one conformer per residue is kept, the altloc
+//      with the highest mean occupancy (ties: the one first in the file).
+//      Atoms without an altloc are always kept; an atom name that has no
+//      atom in the chosen altloc keeps its own highest-occupancy
+//      alternative. Residues sharing a sequence number (microheterogeneity,
+//      e.g. ALA and SER both at 42) are one unit: a residue whose atoms all
+//      belong to altlocs not chosen is dropped;
+//   3. waters are dropped unless keep_waters;
+//   4. hetero groups (ligands, ions, sugars, buffer molecules: residues that
+//      are neither polymer nor water) are dropped unless keep_hetero. A
+//      modified residue inside a polymer (MSE in a protein chain) is polymer
+//      and kept. Polymer or not comes from the mmCIF entities, or for PDB
+//      files from TER records and gemmi's polymer heuristics; HETATM records
+//      count as hetero even inside a polymer when their chain has no ATOM
+//      records (peptide ligands) or gemmi's tables do not know the residue
+//      as an amino acid or nucleotide (a covalently bound inhibitor);
+//   5. hydrogens (H and D) are dropped unless keep_hydrogens.
+//
+// Each dropped atom is counted once, under the first reason that applies.
+// Every kept atom gets a radius from molecule/radii.hpp (ProtOr).
+//
+// The hetero groups of the model (after steps 1 and 2) are also returned on
+// their own, whatever keep_hetero says, each with its heavy atoms: the
+// ligands a pocket may hold.
+//
+// Errors throw alpha::Error (StructureError) with one line naming the file:
+// missing, a directory, empty, corrupt or truncated gzip data, not PDB or
+// mmCIF, a broken or truncated mmCIF/PDB file, no such model or chain, no
+// atoms left after the selection, fewer than 4 atoms. The library itself
+// never logs: what was kept and dropped, and warnings (e.g. an unknown
+// element), come back in StructureReport.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "alpha/error.hpp"
+#include "alpha/geometry.hpp"
+
+namespace molecule {
+
+class StructureError : public alpha::Error {
+public:
+  using alpha::Error::Error;
+};
+
+struct StructureOptions {
+  int model = 0;                    // model number as in the file (MODEL n); 0: the first model
+  std::vector<std::string> chains;  // chain names (author chain ids) to keep; empty: all chains
+  bool keep_hydrogens = false;
+  bool keep_waters = false;
+  bool keep_hetero = false;
+};
+
+struct Atom {
+  int serial = 0;            // atom serial number as in the file
+  std::string name;          // atom name ("CA")
+  std::string element;       // element symbol ("C", "Se"); "X" if not recognised
+  char altloc = '\0';        // alternate location; '\0' for none
+  float occupancy = 1;       // as stored by gemmi (single precision)
+  float b_factor = 0;        // isotropic B, A^2
+  std::string residue_name;  // "ALA"
+  int seq_num = 0;           // residue sequence number (author numbering)
+  char icode = '\0';         // insertion code; '\0' for none
+  std::string chain;         // author chain id
+  bool hetero = false;       // a HETATM record
+  alpha::Vec3 position;      // A
+  double radius = 0;         // A, from molecule/radii.hpp
+};
+
+// A ligand, ion or other non-polymer, non-water residue, with its heavy atoms.
+struct HeteroGroup {
+  std::string residue_name;
+  std::string chain;
+  int seq_num = 0;
+  char icode = '\0';
+  std::vector<Atom> atoms;  // never empty
+};
+
+struct StructureReport {
+  std::string format;  // "PDB" or "mmCIF"
+  bool gzipped = false;
+  std::size_t models = 0;          // models in the file
+  int model = 0;                   // number of the model read
+  std::size_t atoms_in_model = 0;  // every atom of that model
+  std::size_t kept = 0;            // = atoms.size()
+  // Dropped atoms, by reason (each atom once, in this order).
+  std::size_t dropped_chain = 0;
+  std::size_t dropped_altloc = 0;
+  std::size_t dropped_water = 0;
+  std::size_t dropped_hetero = 0;
+  std::size_t dropped_hydrogen = 0;
+  std::size_t hetero_groups = 0;  // = hetero_groups.size()
+  // Problems that did not stop the reading, one line each (e.g. one per
+  // unrecognised element, which got molecule::kDefaultRadius).
+  std::vector<std::string> warnings;
+};
+
+struct Structure {
+  std::vector<Atom> atoms;                 // the selected atoms, in file order; at least 4
+  std::vector<HeteroGroup> hetero_groups;  // in file order
+  StructureReport report;
+};
+
+// Reads and selects; throws StructureError naming the file on any error.
+Structure read_structure(const std::string& path, const StructureOptions& options = {});
+
+// The same from the bytes of a file (possibly gzipped); `name` is used in
+// error messages.
+Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options = {});
+
+// One line on what was read, kept and dropped, e.g. "PDB, model 1: kept
+// 2966 of 3294 atoms; dropped: 295 water, 33 hetero; 3 hetero groups".
+std::string summary(const StructureReport& report);
+
+// Whether a file name looks like a structure file: .pdb .ent .cif .mmcif,
+// each optionally followed by .gz (case-insensitive). Lets a caller choose
+// between a structure file and another kind of input.
+bool is_structure_file(std::string_view path);
+
+}  // namespace molecule

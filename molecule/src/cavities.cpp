@@ -1,0 +1,253 @@
+#include "molecule/cavities.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <utility>
+
+#include "alpha/discrete_flow.hpp"
+#include "alpha/error.hpp"
+#include "alpha/persistent_basins.hpp"
+#include "cavity_space.hpp"
+
+namespace molecule {
+namespace {
+
+using alpha::Index;
+using alpha::Vec3;
+
+void check_input(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
+  const alpha::Triangulation& t = ac.triangulation();
+  if (radii.size() != t.num_points())
+    alpha::fail("find_cavities: " + std::to_string(radii.size()) + " radii for " + std::to_string(t.num_points()) +
+                " points");
+  if (!(options.probe >= 0) || !std::isfinite(options.probe)) alpha::fail("find_cavities: probe must be >= 0");
+  if (!(options.split_persistence >= 0)) alpha::fail("find_cavities: split_persistence must be >= 0");
+  if (!(options.burial_radius >= 0) || !std::isfinite(options.burial_radius))
+    alpha::fail("find_cavities: burial_radius must be >= 0");
+  if (std::isnan(options.min_volume)) alpha::fail("find_cavities: min_volume is not a number");
+  for (Index i = 0; i < radii.size(); ++i) {
+    const double r = radii[i];
+    if (!(r >= 0) || !std::isfinite(r))
+      alpha::fail("find_cavities: radius of point " + std::to_string(i) + " is not >= 0");
+    const double w = (r + options.probe) * (r + options.probe);
+    if (std::fabs(t.weight(i) - w) > 1e-9 * std::max(1.0, w))
+      alpha::fail("find_cavities: the complex's weight of point " + std::to_string(i) +
+                  " is not (radius + probe)^2");
+  }
+}
+
+// An empty triangle between a cavity and the rest of the empty space, and
+// whether that side is the outside.
+using Opening = std::pair<Index, bool>;
+
+// The openings grouped into mouths: triangles of one kind (to the outside
+// or not) joined through shared edges. `openings` sorted.
+std::vector<Mouth> group_mouths(const alpha::Simplices& s, const std::vector<Opening>& openings,
+                                const CavitySpace& space) {
+  std::vector<Index> parent(openings.size());
+  std::iota(parent.begin(), parent.end(), Index(0));
+  const auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<std::pair<Index, Index>> by_edge;  // (edge, position in openings)
+  for (Index k = 0; k < openings.size(); ++k)
+    for (Index e : s.triangle_edges(openings[k].first)) by_edge.emplace_back(e, k);
+  std::sort(by_edge.begin(), by_edge.end());
+  for (std::size_t k = 1; k < by_edge.size(); ++k) {
+    const Index a = by_edge[k - 1].second, b = by_edge[k].second;
+    if (by_edge[k].first != by_edge[k - 1].first || openings[a].second != openings[b].second) continue;
+    const Index ra = find(a), rb = find(b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  std::vector<Mouth> mouths;
+  std::vector<Index> mouth_of(openings.size(), alpha::kNone);
+  for (Index k = 0; k < openings.size(); ++k) {
+    Index& m = mouth_of[find(k)];
+    if (m == alpha::kNone) {
+      m = Index(mouths.size());
+      mouths.emplace_back().to_outside = openings[k].second;
+    }
+    mouths[m].triangles.push_back(openings[k].first);
+    mouths[m].area += space.open_area(openings[k].first);
+  }
+  std::stable_partition(mouths.begin(), mouths.end(), [](const Mouth& m) { return m.to_outside; });
+  return mouths;
+}
+
+// A 1-cycle alive at the level, as a tunnel (see Tunnel::bottleneck_radius).
+Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& p, const std::vector<double>& radii,
+                   double probe) {
+  Tunnel tn;
+  tn.birth_alpha_sq = ac.spectrum_value(p.birth);
+  tn.death_alpha_sq = ac.spectrum_value(p.death);
+  tn.bottleneck_triangle = p.death_simplex;
+  const auto& tri = ac.simplices().triangle(p.death_simplex);
+  tn.bottleneck_radius = std::numeric_limits<double>::infinity();
+  for (Index i : tri) {
+    const double grown_sq = (radii[i] + probe) * (radii[i] + probe) + tn.death_alpha_sq;
+    tn.bottleneck_radius = std::min(tn.bottleneck_radius, std::sqrt(grown_sq) - radii[i]);
+  }
+  tn.lining_atoms.assign(tri.begin(), tri.end());
+  std::sort(tn.lining_atoms.begin(), tn.lining_atoms.end());
+  return tn;
+}
+
+// Everything find_cavities shares between the cavities of one complex.
+class CavityBuilder {
+public:
+  CavityBuilder(const alpha::AlphaComplex& ac, const CavityOptions& options)
+      : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), options_(options), level_(ac.level(0.0)),
+        flow_(ac, level_), space_(ac), cavity_of_(t_.num_cells(), alpha::kNone),
+        pair_of_cell_(t_.num_cells(), alpha::kNone) {
+    // The dimension-2 pair killed by each cell.
+    const auto& pairs = ac.persistence();
+    for (Index k = 0; k < pairs.size(); ++k)
+      if (pairs[k].dim == 2) pair_of_cell_[pairs[k].death_simplex] = k;
+  }
+
+  Index level() const { return level_; }
+
+  void run(Cavities& out) {
+    std::vector<std::vector<Index>> regions(flow_.num_regions());
+    for (Index c = 0; c < t_.num_cells(); ++c)
+      if (flow_.region(c) != alpha::kNone) regions[flow_.region(c)].push_back(c);
+    Index next_id = 0;
+    for (const auto& cells : regions) {
+      // The region's triangles to the outside: its mouths, if any.
+      std::vector<Index> region_mouths;
+      for (Index c : cells)
+        for (int k = 0; k < 4; ++k)
+          if (flow_.outside(t_.cell(c).n[k]) && empty(s_.cell_triangle(c, k)))
+            region_mouths.push_back(s_.cell_triangle(c, k));
+      if (region_mouths.empty()) {
+        for (Index c : cells) cavity_of_[c] = next_id;
+        ++next_id;
+        keep(out.voids, build(cells, region_mouths));
+        continue;
+      }
+      const auto basins = alpha::persistent_basins(ac_, level_, cells, options_.split_persistence);
+      for (const auto& basin : basins) {
+        for (Index c : basin) cavity_of_[c] = next_id;
+        ++next_id;
+      }
+      for (const auto& basin : basins) keep(out.pockets, build(basin, region_mouths));
+    }
+  }
+
+private:
+  const alpha::AlphaComplex& ac_;
+  const alpha::Triangulation& t_;
+  const alpha::Simplices& s_;
+  const CavityOptions& options_;
+  Index level_;
+  alpha::DiscreteFlow flow_;
+  CavitySpace space_;
+  std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
+  std::vector<Index> pair_of_cell_;  // cell -> dimension-2 pair it kills
+
+  bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
+
+  void keep(std::vector<Cavity>& list, Cavity&& c) const {
+    if (c.sa_volume >= options_.min_volume) list.push_back(std::move(c));
+  }
+
+  // One cavity: `cells` sorted, all numbered alike in cavity_of_;
+  // `region_mouths`: the triangles of its region to the outside.
+  Cavity build(const std::vector<Index>& cells, const std::vector<Index>& region_mouths) const {
+    Cavity cav;
+    cav.cells = cells;
+    const Index id = cavity_of_[cells.front()];
+    std::vector<Opening> openings;
+    std::vector<CellSpace> space;
+    space.reserve(cells.size());
+    Index last = cells.front();
+    Vec3 weighted{};
+    double total_weight = 0;
+    for (Index c : cells) {
+      const alpha::Cell& cell = t_.cell(c);
+      for (int k = 0; k < 4; ++k) {
+        cav.lining_atoms.push_back(cell.v[k]);
+        const Index f = s_.cell_triangle(c, k);
+        if (cavity_of_[cell.n[k]] == id || !empty(f)) continue;
+        openings.emplace_back(f, flow_.outside(cell.n[k]));
+      }
+      // The last cell to fill; ties as in the persistence pairs (the elder
+      // of a complement component is its largest cell by rank, then id).
+      if (ac_.cell_entry(c) >= ac_.cell_entry(last)) last = c;
+      const CellSpace& m = space.emplace_back(space_.cell(c));
+      cav.sa_volume += m.sa_empty;
+      cav.sa_area += m.sa_area;
+      const double weight = std::max(0.0, m.sa_empty);
+      weighted.x += weight * m.centroid.x, weighted.y += weight * m.centroid.y, weighted.z += weight * m.centroid.z;
+      total_weight += weight;
+    }
+    // Fractional shares are exact only in sum: keep the sums, not below 0.
+    cav.sa_volume = std::max(0.0, cav.sa_volume);
+    cav.sa_area = std::max(0.0, cav.sa_area);
+    cav.center = total_weight > 0
+                     ? Vec3{weighted.x / total_weight, weighted.y / total_weight, weighted.z / total_weight}
+                     : space.front().centroid;
+    std::sort(cav.lining_atoms.begin(), cav.lining_atoms.end());
+    cav.lining_atoms.erase(std::unique(cav.lining_atoms.begin(), cav.lining_atoms.end()), cav.lining_atoms.end());
+
+    std::sort(openings.begin(), openings.end());
+    cav.mouths = group_mouths(s_, openings, space_);
+    for (const Mouth& m : cav.mouths) cav.mouth_area += m.area;
+    cav.buriedness = cav.sa_area + cav.mouth_area > 0 ? cav.sa_area / (cav.sa_area + cav.mouth_area) : 1;
+
+    cav.max_alpha_sq = ac_.spectrum_value(ac_.cell_entry(last));
+    cav.fill_alpha_sq = cav.max_alpha_sq;
+    const Index p = pair_of_cell_[last];
+    cav.close_alpha_sq = p == alpha::kNone ? cav.fill_alpha_sq : ac_.spectrum_value(ac_.persistence()[p].birth);
+
+    for (std::size_t k = 0; k < cells.size() && !region_mouths.empty(); ++k) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (Index f : region_mouths) {
+        const auto& fv = s_.triangle(f);
+        nearest = std::min(nearest, point_triangle_distance(space[k].centroid, t_.point(fv[0]), t_.point(fv[1]),
+                                                            t_.point(fv[2])));
+      }
+      cav.depth = std::max(cav.depth, nearest);
+    }
+
+    const double r2 = options_.burial_radius * options_.burial_radius;
+    for (const Vec3& x : t_.points()) {
+      const double dx = x.x - cav.center.x, dy = x.y - cav.center.y, dz = x.z - cav.center.z;
+      cav.burial_atoms += dx * dx + dy * dy + dz * dz <= r2;
+    }
+    return cav;
+  }
+};
+
+}  // namespace
+
+Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
+  check_input(ac, radii, options);
+  CavityBuilder builder(ac, options);
+  Cavities out;
+  builder.run(out);
+  rank_cavities(out.pockets);
+  rank_cavities(out.voids);
+  const Index level = builder.level();
+  for (const alpha::PersistencePair& p : ac.persistence())
+    if (p.dim == 1 && p.birth < level && p.death >= level && p.death != alpha::kNever)
+      out.tunnels.push_back(make_tunnel(ac, p, radii, options.probe));
+  std::stable_sort(out.tunnels.begin(), out.tunnels.end(),
+                   [](const Tunnel& a, const Tunnel& b) { return a.death_alpha_sq > b.death_alpha_sq; });
+  return out;
+}
+
+double cavity_score(const Cavity& cavity) {
+  return cavity.sa_volume * std::pow(double(cavity.burial_atoms) / 600, 12);
+}
+
+void rank_cavities(std::vector<Cavity>& cavities) {
+  for (Cavity& c : cavities) c.score = cavity_score(c);
+  std::stable_sort(cavities.begin(), cavities.end(), [](const Cavity& a, const Cavity& b) { return a.score > b.score; });
+}
+
+}  // namespace molecule

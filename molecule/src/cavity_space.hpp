@@ -1,0 +1,46 @@
+// The empty space of the cells and triangles of the solvent-accessible
+// complex (alpha_sq = 0 on the probe-inflated balls), what a cavity's
+// volume, area, centre, mouths and depth are summed from.
+#pragma once
+#include "alpha/alpha_complex.hpp"
+#include "alpha/union_of_balls.hpp"
+
+namespace molecule {
+
+// A cell's shares are fractional (see CavitySpace::cell): they can be
+// slightly negative in a thin cell, and only sums over many cells are
+// meaningful.
+struct CellSpace {
+  double volume = 0;    // of the tetrahedron, A^3
+  double sa_empty = 0;  // the part not covered by the inflated balls, A^3
+  double sa_area = 0;   // the inflated spheres' boundary inside the cell, A^2
+  alpha::Vec3 centroid{};
+};
+
+class CavitySpace {
+public:
+  // `ac`: the complex of the probe-inflated balls (weights = squared radii).
+  explicit CavitySpace(const alpha::AlphaComplex& ac);
+
+  // The union's share of the cell by fractional inclusion-exclusion
+  // (alpha::UnionOfBalls): exact for the cell when the balls' pieces stay
+  // in it, exact in sum over all cells.
+  CellSpace cell(alpha::Index c) const;
+
+  // Area of a triangle not covered by the discs its three inflated balls
+  // cut from its plane, split the same way: each disc's sector in its
+  // corner, less half the lens of each edge in the dual complex (the lens
+  // is symmetric about the edge). Exact when no disc reaches the opposite
+  // edge.
+  double open_area(alpha::Index triangle) const;
+
+private:
+  const alpha::AlphaComplex& ac_;
+  alpha::UnionOfBalls union_;
+  alpha::Index level_;
+};
+
+// Euclidean distance from p to the triangle abc.
+double point_triangle_distance(const alpha::Vec3& p, const alpha::Vec3& a, const alpha::Vec3& b, const alpha::Vec3& c);
+
+}  // namespace molecule

@@ -1,0 +1,17 @@
+// Decompression of gzip data (RFC 1952) with zlib, strictly: a truncated
+// stream, corrupt data or a wrong checksum is an error, never a silently
+// shortened text. Concatenated gzip members are read one after another.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace molecule {
+
+// Whether data starts with the gzip magic bytes.
+bool is_gzip(std::string_view data);
+
+// The decompressed content of gzip data. Throws alpha::Error with one line
+// naming `name` when the data is not valid gzip.
+std::string gunzip(std::string_view data, const std::string& name);
+
+}  // namespace molecule

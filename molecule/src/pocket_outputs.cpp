@@ -1,0 +1,89 @@
+#include "molecule/pocket_outputs.hpp"
+
+#include <algorithm>
+#include <regex>
+#include <system_error>
+
+#include "alpha/error.hpp"
+#include "molecule/atomic_file.hpp"
+#include "molecule/cavity_mesh.hpp"
+#include "molecule/mesh_export.hpp"
+#include "molecule/pocket_colors.hpp"
+#include "molecule/pocket_pdb.hpp"
+#include "molecule/pymol_script.hpp"
+
+namespace molecule {
+
+namespace fs = std::filesystem;
+
+PocketOutputDir::PocketOutputDir(const std::string& path) : path_(path) {
+  std::error_code ec;
+  if (fs::exists(path_, ec) && !fs::is_directory(path_, ec))
+    alpha::fail(path + ": cannot create the output directory: a file of that name exists");
+  create(path_);
+  create(path_ / "meshes");
+  check_can_create((path_ / "report.json").string());
+  check_can_create((path_ / "meshes" / "molecule.ply").string());
+}
+
+PocketOutputDir::~PocketOutputDir() {
+  if (written_) return;
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
+    std::error_code ec;
+    fs::remove(*it, ec);  // removes only an empty directory
+  }
+}
+
+void PocketOutputDir::create(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return;
+  if (!fs::create_directory(dir, ec))
+    alpha::fail(dir.string() + ": cannot create the output directory: " +
+                (ec ? ec.message() : std::string("a file of that name exists")));
+  created_.push_back(dir);
+}
+
+std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const std::string& structure_path) {
+  std::vector<std::string> written;
+  const auto text_file = [&](const std::string& name, const std::string& content) {
+    write_file_atomically((path_ / name).string(), content);
+    written_ = true;
+    written.push_back(name);
+  };
+  const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
+    write_mesh_file((path_ / name).string(), mesh);
+    written.push_back(name);
+  };
+
+  text_file("report.json", pocket_report(run).dump(2) + "\n");
+  text_file("pockets.csv", pockets_csv(run));
+  text_file("pockets.pml", pymol_script(run, structure_path));
+  const alpha::AlphaComplex& ac = *run.search->complex;
+  const Cavities& cavities = run.search->cavities;
+  text_file("pockets.pdb", pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file));
+  if (!run.mesh_format.empty()) {
+    const auto meshes = [&](const std::vector<Cavity>& list, const std::string& kind) {
+      for (std::size_t i = 0; i < list.size(); ++i)
+        mesh_file(cavity_mesh_path(kind, i + 1, run.mesh_format), cavity_mesh(ac, list[i], rank_color(i + 1)));
+    };
+    meshes(cavities.pockets, "pocket");
+    meshes(cavities.voids, "void");
+    mesh_file(molecule_mesh_path(run.mesh_format), molecule_mesh(ac));
+  }
+  remove_stale_meshes(written);
+  return written;
+}
+
+void PocketOutputDir::remove_stale_meshes(const std::vector<std::string>& written) const {
+  static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(path_ / "meshes", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!std::regex_match(name, kOurs)) continue;
+    if (std::find(written.begin(), written.end(), "meshes/" + name) != written.end()) continue;
+    std::error_code rm;
+    fs::remove(entry.path(), rm);
+  }
+}
+
+}  // namespace molecule

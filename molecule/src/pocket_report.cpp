@@ -1,0 +1,215 @@
+#include "molecule/pocket_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+#include "alpha/error.hpp"
+#include "molecule/radii.hpp"
+
+namespace molecule {
+namespace {
+
+using json = nlohmann::ordered_json;  // keys in the documented order
+
+double rounded(double x, double scale) {
+  const double r = std::round(x * scale) / scale;
+  return r == 0 ? 0.0 : r;  // no -0 in the output
+}
+double length(double x) { return rounded(x, 1e3); }  // also areas and volumes
+double score(double x) { return rounded(x, 1e4); }
+
+json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
+
+std::string icode_text(char icode) { return icode ? std::string(1, icode) : std::string(); }
+
+// Residue identity: chain, number, insertion code and name.
+auto residue_key(const Atom& a) { return std::tie(a.chain, a.seq_num, a.icode, a.residue_name); }
+
+json lining_atoms(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+  json out = json::array();
+  for (const alpha::Index i : indices) {
+    const Atom& a = atoms.at(i);
+    out.push_back({{"serial", a.serial}, {"name", a.name}, {"element", a.element}, {"residue", residue_id(a)}});
+  }
+  return out;
+}
+
+json lining_residues(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+  json out = json::array();
+  for (const alpha::Index i : residues_of(atoms, indices)) {
+    const Atom& a = atoms[i];
+    out.push_back({{"id", residue_id(a)},
+                   {"chain", a.chain},
+                   {"name", a.residue_name},
+                   {"number", a.seq_num},
+                   {"insertion_code", icode_text(a.icode)}});
+  }
+  return out;
+}
+
+json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const std::string& kind) {
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  json mouth_areas = json::array();
+  std::size_t mouths_to_outside = 0;
+  for (const Mouth& m : c.mouths) {
+    mouth_areas.push_back(length(m.area));
+    mouths_to_outside += m.to_outside;
+  }
+  json e = {
+      {"rank", rank},
+      {"score", score(c.score)},
+      {"sa_volume", length(c.sa_volume)},
+      {"sa_area", length(c.sa_area)},
+      {"ms_volume", length(c.ms_volume)},
+      {"ms_area", length(c.ms_area)},
+      {"mouths", c.mouths.size()},
+      {"mouths_to_outside", mouths_to_outside},
+      {"mouth_areas", std::move(mouth_areas)},
+      {"mouth_area", length(c.mouth_area)},
+      {"buriedness", score(c.buriedness)},
+      {"burial_atoms", c.burial_atoms},
+      {"depth", length(c.depth)},
+      {"center", point(c.center)},
+      {"tetrahedra", c.cells.size()},
+      {"max_alpha_sq", c.max_alpha_sq},
+      {"close_alpha_sq", c.close_alpha_sq},
+      {"fill_alpha_sq", c.fill_alpha_sq},
+      {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},
+      {"lining_residues", lining_residues(atoms, c.lining_atoms)},
+  };
+  if (!run.mesh_format.empty()) e["mesh"] = cavity_mesh_path(kind, rank, run.mesh_format);
+  return e;
+}
+
+json cavity_list(const PocketRun& run, const std::vector<Cavity>& list, const std::string& kind) {
+  json out = json::array();
+  for (std::size_t i = 0; i < list.size(); ++i) out.push_back(cavity_entry(run, list[i], i + 1, kind));
+  return out;
+}
+
+json tunnel_list(const PocketRun& run) {
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  json out = json::array();
+  std::size_t rank = 0;
+  for (const Tunnel& t : run.search->cavities.tunnels)
+    out.push_back({{"rank", ++rank},
+                   {"birth_alpha_sq", t.birth_alpha_sq},
+                   {"death_alpha_sq", t.death_alpha_sq},
+                   {"bottleneck_radius", length(t.bottleneck_radius)},
+                   {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
+                   {"lining_residues", lining_residues(atoms, t.lining_atoms)}});
+  return out;
+}
+
+// A number as report.json has it (the shortest text that reads back the
+// same), empty when it was not computed (NaN).
+std::string csv_number(double x) {
+  if (std::isnan(x)) return {};
+  return json(x).dump();
+}
+
+// A CSV field: quoted (quotes doubled) when it holds a separator, a quote
+// or a line break.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + '"';
+}
+
+}  // namespace
+
+std::string residue_id(const Atom& a) {
+  return a.chain + ':' + a.residue_name + ':' + std::to_string(a.seq_num) + icode_text(a.icode);
+}
+
+std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+  std::vector<alpha::Index> sorted = indices;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<alpha::Index> first;  // one atom per residue, by file order
+  for (const alpha::Index i : sorted) {
+    if (i >= atoms.size()) alpha::fail("atom index " + std::to_string(i) + " out of range");
+    const bool seen = std::any_of(first.begin(), first.end(),
+                                  [&](alpha::Index j) { return residue_key(atoms[j]) == residue_key(atoms[i]); });
+    if (!seen) first.push_back(i);
+  }
+  return first;
+}
+
+std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format) {
+  return "meshes/" + kind + "_" + std::to_string(rank) + "." + format;
+}
+
+std::string molecule_mesh_path(const std::string& format) { return "meshes/molecule." + format; }
+
+json pocket_report(const PocketRun& run) {
+  const StructureReport& r = run.structure->report;
+  json input = {
+      {"file", run.file},
+      {"format", r.format},
+      {"gzipped", r.gzipped},
+      {"model", r.model},
+      {"atoms_in_model", r.atoms_in_model},
+      {"atoms_kept", r.kept},
+      {"atoms_dropped",
+       {{"chain", r.dropped_chain},
+        {"altloc", r.dropped_altloc},
+        {"water", r.dropped_water},
+        {"hetero", r.dropped_hetero},
+        {"hydrogen", r.dropped_hydrogen}}},
+      {"hetero_groups", r.hetero_groups},
+      {"warnings", r.warnings},
+  };
+  json parameters = {
+      {"probe", run.options.probe},
+      {"min_volume", run.options.min_volume},
+      {"radii", std::string(kRadiusTable)},
+      {"alpha_sq", 0.0},
+  };
+  json molecule = {{"atoms", run.structure->atoms.size()},
+                   {"sa_area", length(run.search->totals.sa_area)},
+                   {"sa_volume", length(run.search->totals.sa_volume)},
+                   {"pockets", run.search->cavities.pockets.size()},
+                   {"voids", run.search->cavities.voids.size()},
+                   {"tunnels", run.search->cavities.tunnels.size()}};
+  if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
+  return {
+      {"alphapocket", run.version},
+      {"input", std::move(input)},
+      {"parameters", std::move(parameters)},
+      {"molecule", std::move(molecule)},
+      {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
+      {"voids", cavity_list(run, run.search->cavities.voids, "void")},
+      {"tunnels", tunnel_list(run)},
+  };
+}
+
+std::string pockets_csv(const PocketRun& run) {
+  std::string out =
+      "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
+      "lining_residues,residues\n";
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  std::size_t rank = 0;
+  for (const Cavity& c : run.search->cavities.pockets) {
+    const std::vector<alpha::Index> residues = residues_of(atoms, c.lining_atoms);
+    std::string names;
+    for (const alpha::Index i : residues) {
+      if (!names.empty()) names += ' ';
+      names += residue_id(atoms[i]);
+    }
+    out += std::to_string(++rank);
+    for (const double x : {score(c.score), length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
+                           length(c.ms_area)})
+      out += ',' + csv_number(x);
+    out += ',' + std::to_string(c.mouths.size());
+    for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
+                           length(c.center.z)})
+      out += ',' + csv_number(x);
+    out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + '\n';
+  }
+  return out;
+}
+
+}  // namespace molecule

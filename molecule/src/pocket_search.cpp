@@ -1,0 +1,40 @@
+#include "molecule/pocket_search.hpp"
+
+#include <chrono>
+#include <utility>
+#include <vector>
+
+#include "alpha/union_of_balls.hpp"
+
+namespace molecule {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+PocketSearch search_pockets(const Structure& structure, const CavityOptions& options) {
+  PocketSearch out;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<alpha::Vec3> points;
+  std::vector<double> weights, radii;
+  for (const Atom& a : structure.atoms) {
+    points.push_back(a.position);
+    weights.push_back((a.radius + options.probe) * (a.radius + options.probe));
+    radii.push_back(a.radius);
+  }
+  out.triangulation = std::make_unique<alpha::Triangulation>(std::move(points), std::move(weights));
+  out.complex = std::make_unique<alpha::AlphaComplex>(*out.triangulation);
+  out.complex_seconds = seconds_since(start);
+
+  const auto cavities_start = std::chrono::steady_clock::now();
+  out.cavities = find_cavities(*out.complex, radii, options);
+  const alpha::UnionOfBalls sa_model(*out.complex);
+  out.totals = {sa_model.area(), sa_model.volume()};
+  out.cavities_seconds = seconds_since(cavities_start);
+  return out;
+}
+
+}  // namespace molecule

@@ -1,0 +1,118 @@
+#include "molecule/pymol_script.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "molecule/pocket_colors.hpp"
+
+namespace molecule {
+namespace {
+
+// Atom ids per "select" line: keeps lines short for PyMOL's parser.
+constexpr std::size_t kIdsPerLine = 40;
+
+// A PyMOL object name from the file name: letters, digits and '_' only
+// ("1a26A", as PyMOL names a fetched entry).
+std::string object_name(const std::string& path) {
+  std::string stem = std::filesystem::path(path).filename().string();
+  stem = stem.substr(0, stem.find('.'));
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return stem.empty() ? std::string("structure") : stem;
+}
+
+// A Python string literal: the path may hold any character.
+std::string python_string(const std::string& s) {
+  std::string q = "\"";
+  for (const unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      q += '\\';
+      q += char(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\x%02x", c);
+      q += esc;
+    } else {
+      q += char(c);
+    }
+  }
+  return q + '"';
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", x);
+  return buf;
+}
+
+struct Named {
+  std::string name;  // pocket_3
+  const Cavity* cavity;
+  Rgb color;
+};
+
+std::vector<Named> named_cavities(const Cavities& cavities) {
+  std::vector<Named> out;
+  for (std::size_t i = 0; i < cavities.pockets.size(); ++i)
+    out.push_back({"pocket_" + std::to_string(i + 1), &cavities.pockets[i], rank_color(i + 1)});
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    out.push_back({"void_" + std::to_string(i + 1), &cavities.voids[i], rank_color(i + 1)});
+  return out;
+}
+
+}  // namespace
+
+std::string pymol_script(const PocketRun& run, const std::string& structure_path) {
+  const std::string obj = object_name(run.file);
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::vector<Named> cavities = named_cavities(run.search->cavities);
+
+  std::string s;
+  s += "# alphapocket " + run.version + ": pockets of " + run.file + "\n";
+  s += "# Run with `pymol pockets.pml` or, inside PyMOL, `@pockets.pml`. Pockets and voids are\n";
+  s += "# coloured by rank (report.json); pocket_N selects the atoms lining pocket N and\n";
+  s += "# pocket_N_center is its centre (void_N, void_N_center likewise).\n";
+  s += "/cmd.load(" + python_string(structure_path) + ", \"" + obj + "\")\n";
+  s += "hide everything, " + obj + "\n";
+  s += "show cartoon, " + obj + "\n";
+  s += "color grey80, " + obj + "\n";
+  s += "set cartoon_color, grey80, " + obj + "\n";
+  s += "show sticks, " + obj + " and organic\n";
+  s += "show surface, " + obj + "\n";
+  s += "set transparency, 0.2, " + obj + "\n";
+  s += "set sphere_scale, 0.6\n";
+
+  for (const Named& c : cavities) {
+    s += "set_color ap_" + c.name + ", [" + std::to_string(c.color.r) + ", " + std::to_string(c.color.g) + ", " +
+         std::to_string(c.color.b) + "]\n";
+    const auto& lining = c.cavity->lining_atoms;
+    for (std::size_t k = 0; k < lining.size() || k == 0; k += kIdsPerLine) {
+      std::string ids;
+      for (std::size_t j = k; j < std::min(lining.size(), k + kIdsPerLine); ++j)
+      {
+        if (!ids.empty()) ids += '+';
+        ids += std::to_string(atoms.at(lining[j]).serial);
+      }
+      const std::string part = ids.empty() ? "none" : "(" + obj + " and id " + ids + ")";
+      s += "select " + c.name + ", " + (k == 0 ? part : c.name + " or " + part) + "\n";
+    }
+    const alpha::Vec3& p = c.cavity->center;
+    s += "pseudoatom " + c.name + "_center, pos=[" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + "]\n";
+    s += "color ap_" + c.name + ", " + c.name + "_center\n";
+  }
+  // Worst rank first: the best one's colour is the one left on shared atoms.
+  for (auto c = cavities.rbegin(); c != cavities.rend(); ++c) {
+    s += "color ap_" + c->name + ", " + c->name + "\n";
+    s += "show sticks, " + c->name + "\n";
+  }
+  if (!cavities.empty()) {
+    s += "show spheres, *_center\n";
+    s += "group centers, *_center\n";
+  }
+  s += "deselect\n";
+  s += "orient " + obj + "\n";
+  return s;
+}
+
+}  // namespace molecule

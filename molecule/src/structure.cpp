@@ -1,0 +1,413 @@
+#include "molecule/structure.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <span>
+#include <sstream>
+#include <system_error>
+
+#include <gemmi/cif.hpp>
+#include <gemmi/mmcif.hpp>
+#include <gemmi/pdb.hpp>
+#include <gemmi/polyheur.hpp>
+#include <gemmi/resinfo.hpp>
+
+#include "gunzip.hpp"
+#include "molecule/radii.hpp"
+
+namespace molecule {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& name, const std::string& what) { throw StructureError(name + ": " + what); }
+
+// ---------------------------------------------------------------- input
+
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st))
+    fail(path, "cannot open: " +
+                   (ec && ec != std::errc::no_such_file_or_directory ? ec.message() : std::string("no such file")));
+  if (fs::is_directory(st)) fail(path, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  if (in.bad()) fail(path, "read error");
+  return std::move(buf).str();
+}
+
+bool ends_with_ci(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
+           return a == std::tolower(static_cast<unsigned char>(b));
+         });
+}
+
+bool is_blank(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+}
+
+enum class Format { Pdb, Mmcif };
+
+// mmCIF: the first thing after blanks and comments is a data_ block.
+bool starts_with_data_block(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      ++i;
+    } else if (text[i] == '#') {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) return false;
+    } else {
+      break;
+    }
+  }
+  std::string_view head = text.substr(i, 5);
+  return head.size() == 5 && ends_with_ci(head, "data_");
+}
+
+// PDB: some line is an ATOM or HETATM record.
+bool has_atom_records(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::string_view line = text.substr(i, 6);
+    if (line.starts_with("ATOM ") || line == "HETATM") return true;
+    const std::size_t eol = text.find('\n', i);
+    if (eol == std::string_view::npos) break;
+    i = eol + 1;
+  }
+  return false;
+}
+
+Format detect_format(std::string_view text, const std::string& name) {
+  if (starts_with_data_block(text)) return Format::Mmcif;
+  if (has_atom_records(text)) return Format::Pdb;
+  if (text.substr(0, 4096).find('\0') != std::string_view::npos) fail(name, "binary data, not a PDB or mmCIF file");
+  fail(name, "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)");
+}
+
+// gemmi's messages may span lines and may name the file already.
+std::string one_line(std::string s, const std::string& name) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.find(name) == std::string::npos ? name + ": " + s : s;
+}
+
+gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name) {
+  try {
+    gemmi::Structure st = format == Format::Pdb
+                              ? gemmi::read_pdb_from_memory(text.data(), text.size(), name)
+                              : gemmi::make_structure(gemmi::cif::read_memory(text.data(), text.size(), name.c_str()));
+    // Polymer, water or neither, where the file does not say (PDB files
+    // without TER records).
+    gemmi::add_entity_types(st, /*overwrite=*/false);
+    return st;
+  } catch (const std::exception& e) {
+    throw StructureError(one_line(e.what(), name));
+  }
+}
+
+// ---------------------------------------------------------------- selection
+
+bool is_hydrogen(const gemmi::Atom& a) { return a.element == gemmi::El::H || a.element == gemmi::El::D; }
+
+bool is_water(const gemmi::Residue& r) { return r.entity_type == gemmi::EntityType::Water || r.is_water(); }
+
+bool is_polymer(const gemmi::Residue& r) { return r.entity_type == gemmi::EntityType::Polymer; }
+
+// Whether any residue of the chain comes from ATOM records.
+bool has_atom_records(const gemmi::Chain& chain) {
+  return std::any_of(chain.residues.begin(), chain.residues.end(),
+                     [](const gemmi::Residue& r) { return r.het_flag == 'A'; });
+}
+
+// A ligand bound to the receptor, as the ligand-site datasets (PDBbind,
+// COACH420/P2Rank) count it: not water and not part of the receptor's
+// polymer. gemmi calls every residue of a polymer chain "polymer", so HETATM
+// residues need a closer look: a chain of HETATM records only is a peptide
+// or an inhibitor given its own chain, and a HETATM residue that gemmi's
+// tables do not know as a modified amino acid or nucleotide is a ligand
+// covalently bound to the chain. Modified residues (MSE, SEP, ...) stay.
+bool is_ligand(const gemmi::Residue& r, bool chain_has_atom_records) {
+  if (!is_polymer(r)) return true;
+  if (r.het_flag != 'H') return false;
+  if (!chain_has_atom_records) return true;
+  const gemmi::ResidueInfo info = gemmi::find_tabulated_residue(r.name);
+  return !(info.is_amino_acid() || info.is_nucleic_acid());
+}
+
+char no_blank(char c) { return c == ' ' ? '\0' : c; }
+
+int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid.num : 0; }
+
+// The altloc kept for a group of residues with one sequence number: the
+// highest mean occupancy, ties to the first in the file; '\0' if none.
+char chosen_altloc(std::span<const gemmi::Residue> group) {
+  struct Conformer {
+    char altloc;
+    double occupancy = 0;
+    std::size_t atoms = 0;
+  };
+  std::vector<Conformer> seen;  // in order of first appearance
+  for (const gemmi::Residue& r : group)
+    for (const gemmi::Atom& a : r.atoms) {
+      if (!a.altloc) continue;
+      auto it = std::find_if(seen.begin(), seen.end(), [&](const Conformer& c) { return c.altloc == a.altloc; });
+      if (it == seen.end()) it = seen.insert(seen.end(), Conformer{a.altloc});
+      it->occupancy += a.occ;
+      ++it->atoms;
+    }
+  const Conformer* best = nullptr;
+  for (const Conformer& c : seen)  // means compared without dividing: a/n > b/m as a*m > b*n
+    if (!best || c.occupancy * double(best->atoms) > best->occupancy * double(c.atoms)) best = &c;
+  return best ? best->altloc : '\0';
+}
+
+// Which atoms of a residue the altloc selection keeps.
+std::vector<bool> altloc_keep(const gemmi::Residue& r, char chosen) {
+  const auto& atoms = r.atoms;
+  std::vector<bool> keep(atoms.size(), true);
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    if (!atoms[i].altloc || atoms[i].altloc == chosen) continue;
+    // Another conformer: kept only when its name has no atom in the chosen
+    // one, and it is that name's highest occupancy (ties: first) atom.
+    for (std::size_t j = 0; j < atoms.size() && keep[i]; ++j) {
+      if (j == i || !atoms[j].altloc || atoms[j].name != atoms[i].name) continue;
+      if (atoms[j].altloc == chosen || atoms[j].occ > atoms[i].occ || (atoms[j].occ == atoms[i].occ && j < i))
+        keep[i] = false;
+    }
+  }
+  return keep;
+}
+
+// A residue of a microheterogeneity group made only of other conformers.
+bool only_other_conformers(const gemmi::Residue& r, char chosen) {
+  return std::all_of(r.atoms.begin(), r.atoms.end(),
+                     [&](const gemmi::Atom& a) { return a.altloc && a.altloc != chosen; });
+}
+
+// Radii per atom, with one warning per element that gets the default.
+class RadiusAssigner {
+public:
+  double operator()(const Atom& a) {
+    const AtomRadius r = atom_radius(a.residue_name, a.name, a.element);
+    if (r.source == RadiusSource::Default) {
+      Unknown& u = unknown_[a.element];
+      if (u.atoms++ == 0)
+        u.first = "atom " + a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
+    }
+    return r.value;
+  }
+  void add_warnings(std::vector<std::string>& warnings) const {
+    for (const auto& [element, u] : unknown_) {
+      std::ostringstream s;
+      s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element '" << element
+        << "' (first: " << u.first << ") given radius " << kDefaultRadius << " A";
+      warnings.push_back(s.str());
+    }
+  }
+
+private:
+  struct Unknown {
+    std::size_t atoms = 0;
+    std::string first;
+  };
+  std::map<std::string, Unknown> unknown_;  // ordered: deterministic warnings
+};
+
+Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain& c) {
+  Atom atom;
+  atom.serial = a.serial;
+  atom.name = a.name;
+  atom.element = a.element.name();
+  atom.altloc = a.altloc;
+  atom.occupancy = a.occ;
+  atom.b_factor = a.b_iso;
+  atom.residue_name = r.name;
+  atom.seq_num = seq_num(r);
+  atom.icode = no_blank(r.seqid.icode);
+  atom.chain = c.name;
+  atom.hetero = r.het_flag == 'H';
+  atom.position = {a.pos.x, a.pos.y, a.pos.z};
+  return atom;
+}
+
+std::string join(const std::vector<std::string>& items, std::size_t max_items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size() && i < max_items; ++i) s += (i ? ", " : "") + items[i];
+  if (items.size() > max_items) s += ", ...";
+  return s;
+}
+
+int model_number(const gemmi::Model& m) {
+  int n = 0;
+  std::from_chars(m.name.data(), m.name.data() + m.name.size(), n);
+  return n;
+}
+
+const gemmi::Model& select_model(const gemmi::Structure& st, int model, const std::string& name) {
+  if (model < 0) fail(name, "invalid model number " + std::to_string(model));
+  if (model == 0) return st.models.front();
+  for (const gemmi::Model& m : st.models)
+    if (model_number(m) == model) return m;
+  std::vector<std::string> names;
+  for (const gemmi::Model& m : st.models) names.push_back(m.name);
+  fail(name, "no model " + std::to_string(model) + " (models: " + join(names, 10) + ")");
+}
+
+void check_chains(const gemmi::Model& model, const std::vector<std::string>& chains, const std::string& name) {
+  for (const std::string& wanted : chains)
+    if (!model.find_chain(wanted)) {
+      std::vector<std::string> names;
+      for (const gemmi::Chain& c : model.chains)
+        if (std::find(names.begin(), names.end(), c.name) == names.end()) names.push_back(c.name);
+      fail(name, "no chain '" + wanted + "' in model " + model.name + " (chains: " + join(names, 30) + ")");
+    }
+}
+
+std::string dropped_list(const StructureReport& r) {
+  std::vector<std::string> parts;
+  const auto add = [&](std::size_t n, const char* what) {
+    if (n) parts.push_back(std::to_string(n) + " " + what);
+  };
+  add(r.dropped_chain, "other-chain");
+  add(r.dropped_altloc, "altloc");
+  add(r.dropped_water, "water");
+  add(r.dropped_hetero, "hetero");
+  add(r.dropped_hydrogen, "hydrogen");
+  return parts.empty() ? "none" : join(parts, parts.size());
+}
+
+Structure select(const gemmi::Structure& st, const StructureOptions& options, const std::string& name) {
+  const gemmi::Model& model = select_model(st, options.model, name);
+  check_chains(model, options.chains, name);
+  Structure out;
+  StructureReport& report = out.report;
+  report.models = st.models.size();
+  report.model = model_number(model);
+  RadiusAssigner radius;
+  const auto wanted_chain = [&](const std::string& chain) {
+    return options.chains.empty() ||
+           std::find(options.chains.begin(), options.chains.end(), chain) != options.chains.end();
+  };
+  for (const gemmi::Chain& chain : model.chains) {
+    const auto& residues = chain.residues;
+    const bool chain_has_atom_records = has_atom_records(chain);
+    for (std::size_t g = 0; g < residues.size();) {
+      // A group: consecutive residues with one sequence number.
+      std::size_t end = g + 1;
+      while (end < residues.size() && residues[end].seqid == residues[g].seqid) ++end;
+      const std::span<const gemmi::Residue> group(residues.data() + g, end - g);
+      g = end;
+      const char chosen = chosen_altloc(group);
+      for (const gemmi::Residue& res : group) {
+        report.atoms_in_model += res.atoms.size();
+        if (!wanted_chain(chain.name)) {
+          report.dropped_chain += res.atoms.size();
+          continue;
+        }
+        if (group.size() > 1 && only_other_conformers(res, chosen)) {
+          report.dropped_altloc += res.atoms.size();
+          continue;
+        }
+        const std::vector<bool> keep = altloc_keep(res, chosen);
+        const bool water = is_water(res);
+        const bool hetero = !water && is_ligand(res, chain_has_atom_records);
+        HeteroGroup ligand{res.name, chain.name, seq_num(res), no_blank(res.seqid.icode), {}};
+        for (std::size_t i = 0; i < res.atoms.size(); ++i) {
+          const gemmi::Atom& a = res.atoms[i];
+          if (!keep[i]) {
+            ++report.dropped_altloc;
+            continue;
+          }
+          const bool in_ligand = hetero && !is_hydrogen(a);
+          bool kept = false;
+          if (water && !options.keep_waters)
+            ++report.dropped_water;
+          else if (hetero && !options.keep_hetero)
+            ++report.dropped_hetero;
+          else if (is_hydrogen(a) && !options.keep_hydrogens)
+            ++report.dropped_hydrogen;
+          else
+            kept = true;
+          if (!kept && !in_ligand) continue;
+          Atom atom = make_atom(a, res, chain);
+          atom.radius = radius(atom);
+          if (in_ligand) ligand.atoms.push_back(atom);
+          if (kept) out.atoms.push_back(std::move(atom));
+        }
+        if (!ligand.atoms.empty()) out.hetero_groups.push_back(std::move(ligand));
+      }
+    }
+  }
+  report.kept = out.atoms.size();
+  report.hetero_groups = out.hetero_groups.size();
+  radius.add_warnings(report.warnings);
+  if (out.atoms.empty())
+    fail(name, "no atoms left after the selection (model " + model.name + " has " +
+                   std::to_string(report.atoms_in_model) + " atoms; dropped: " + dropped_list(report) + ")");
+  if (out.atoms.size() < 4)
+    fail(name, "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
+                   " after the selection, at least 4 are needed");
+  return out;
+}
+
+}  // namespace
+
+Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options) {
+  if (data.empty()) fail(name, "file is empty");
+  std::string unzipped;
+  const bool gzipped = is_gzip(data);
+  if (gzipped) {
+    try {
+      unzipped = gunzip(data, name);
+    } catch (const alpha::Error& e) {
+      throw StructureError(e.what());
+    }
+    data = unzipped;
+  } else if (ends_with_ci(name, ".gz")) {
+    fail(name, "not gzip data (no gzip header)");
+  }
+  if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
+  const Format format = detect_format(data, name);
+  const gemmi::Structure st = parse_with_gemmi(data, format, name);
+  const bool no_atoms = std::all_of(st.models.begin(), st.models.end(), [](const gemmi::Model& m) {
+    return std::all_of(m.chains.begin(), m.chains.end(), [](const gemmi::Chain& c) {
+      return std::all_of(c.residues.begin(), c.residues.end(), [](const gemmi::Residue& r) { return r.atoms.empty(); });
+    });
+  });
+  if (no_atoms) fail(name, "no atoms in the file");
+  Structure out = select(st, options, name);
+  out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
+  out.report.gzipped = gzipped;
+  return out;
+}
+
+Structure read_structure(const std::string& path, const StructureOptions& options) {
+  return parse_structure(read_file(path), path, options);
+}
+
+bool is_structure_file(std::string_view path) {
+  if (ends_with_ci(path, ".gz")) path.remove_suffix(3);
+  for (const char* ext : {".pdb", ".ent", ".cif", ".mmcif"})
+    if (ends_with_ci(path, ext)) return true;
+  return false;
+}
+
+std::string summary(const StructureReport& r) {
+  std::ostringstream s;
+  s << r.format << (r.gzipped ? " (gzip)" : "") << ", model " << r.model;
+  if (r.models > 1) s << " of " << r.models;
+  s << ": kept " << r.kept << " of " << r.atoms_in_model << " atoms; dropped: " << dropped_list(r) << "; "
+    << r.hetero_groups << " hetero group" << (r.hetero_groups == 1 ? "" : "s");
+  return s.str();
+}
+
+}  // namespace molecule

@@ -1,0 +1,175 @@
+#!/usr/bin/env bash
+# CLI tests of `alphapocket pockets`, one case per CTest test. Exit code 77
+# means skipped. Usage: pockets.sh ALPHAPOCKET REPO_ROOT CASE
+#
+# The cases run on examples/data/1a26A.pdb; the contents of the files are
+# checked in depth by tests/test_pocket_outputs.cpp, here: the command line,
+# which files appear where, that they agree with each other, and errors.
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
+
+expect_success() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+}
+
+# Files below directory DIR (hidden ones too), relative, sorted, one line.
+tree_of() {
+  (cd "$1" && find . -mindepth 1 | sed 's|^\./||' | LC_ALL=C sort | tr '\n' ' ' | sed 's/ $//')
+}
+
+# "N pockets, M voids, K tunnels" of the summary: prints N M K.
+summary_counts() {
+  grep -oE '^[0-9]+ pockets?, [0-9]+ voids?, [0-9]+ tunnels?' "$tmp/out" | grep -oE '[0-9]+' | tr '\n' ' ' |
+    sed 's/ $//'
+}
+
+# The outputs of one run in DIR agree: one CSV row, one pml selection, one
+# CEN pseudo-atom and one mesh per pocket (and per void).
+expect_consistent() {  # DIR POCKETS VOIDS EXT
+  local dir=$1 pockets=$2 voids=$3 ext=$4
+  for f in report.json pockets.csv pockets.pml pockets.pdb "meshes/molecule.$ext"; do
+    [[ -s "$dir/$f" ]] || fail "$dir/$f missing or empty"
+  done
+  [[ $(($(wc -l <"$dir/pockets.csv") - 1)) -eq $pockets ]] || fail "pockets.csv: not $pockets rows"
+  [[ $(grep -c '^HETATM.\{6\} CEN STP P' "$dir/pockets.pdb") -eq $pockets ]] || fail "pockets.pdb: not $pockets pockets"
+  [[ $(grep -c '^HETATM.\{6\} CEN STP V' "$dir/pockets.pdb") -eq $voids ]] || fail "pockets.pdb: not $voids voids"
+  [[ $(grep -c '^pseudoatom pocket_[0-9]*_center' "$dir/pockets.pml") -eq $pockets ]] || fail "pockets.pml: centres"
+  [[ $(grep -c '"rank": ' "$dir/report.json") -ge $((pockets + voids)) ]] || fail "report.json: ranks"
+  [[ $(ls "$dir/meshes" | grep -c "^pocket_[0-9]*\.$ext$") -eq $pockets ]] || fail "meshes: not $pockets pockets"
+  [[ $(ls "$dir/meshes" | grep -c "^void_[0-9]*\.$ext$") -eq $voids ]] || fail "meshes: not $voids voids"
+  [[ -z $(find "$dir" -name '.*.tmp') ]] || fail "temporary files left"
+}
+
+case "$case_name" in
+  default)
+    # A bare run: OUTDIR is <name>_pockets in the current directory; the
+    # PyMOL script loads the structure by its absolute path.
+    mkdir "$tmp/work"
+    cp "$pdb" "$tmp/work/1a26A.pdb"
+    cd "$tmp/work"
+    run pockets 1a26A.pdb
+    expect_success
+    [[ -d 1a26A_pockets ]] || fail "1a26A_pockets/ not created"
+    read -r pockets voids tunnels <<<"$(summary_counts)"
+    [[ $pockets -ge 1 ]] || fail "no pockets in the summary"
+    grep -q "^rank .*lining residues$" "$tmp/out" || fail "no table in the summary"
+    grep -qE '^ +1 .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for pocket 1"
+    [[ $(wc -l <"$tmp/out") -le 24 ]] || fail "the summary is longer than one screen"
+    expect_consistent 1a26A_pockets "$pockets" "$voids" ply
+    grep -qF "/cmd.load(\"$tmp/work/1a26A.pdb\", \"1a26A\")" 1a26A_pockets/pockets.pml ||
+      fail "pockets.pml does not load the structure by its absolute path"
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 5 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
+    ;;
+  json)
+    # --json: the report on one line, the same as report.json.
+    run pockets "$pdb" -o "$tmp/out dir" --json
+    expect_json_object
+    [[ "$(tr -d ' \n' <"$tmp/out")" == "$(tr -d ' \n' <"$tmp/out dir/report.json")" ]] ||
+      fail "stdout differs from report.json"
+    pockets=$(grep -o '"pockets":[0-9]*' "$tmp/out" | head -n 1 | cut -d: -f2)
+    voids=$(grep -o '"voids":[0-9]*' "$tmp/out" | head -n 1 | cut -d: -f2)
+    expect_consistent "$tmp/out dir" "$pockets" "$voids" ply
+    ;;
+  mesh_formats)
+    # --mesh obj; a second run with the default format into the same
+    # directory replaces the meshes (no .obj left).
+    run pockets "$pdb" -o "$tmp/o" --mesh obj
+    expect_success
+    read -r pockets voids tunnels <<<"$(summary_counts)"
+    expect_consistent "$tmp/o" "$pockets" "$voids" obj
+    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.obj$') ]] || fail "other meshes than .obj"
+    run pockets "$pdb" -o "$tmp/o"
+    expect_success
+    expect_consistent "$tmp/o" "$pockets" "$voids" ply
+    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.ply$') ]] || fail "meshes of the first run left: $(ls "$tmp/o/meshes")"
+    ;;
+  min_volume)
+    # A huge --min-volume drops every pocket and void: the outputs are
+    # empty but valid.
+    run pockets "$pdb" -o "$tmp/o" --min-volume 1e9
+    expect_success
+    [[ $(summary_counts) == "0 0 "* ]] || fail "pockets or voids left: $(summary_counts)"
+    expect_consistent "$tmp/o" 0 0 ply
+    grep -q '"pockets": \[\]' "$tmp/o/report.json" || fail "report.json: pockets not empty"
+    ;;
+  probe)
+    # A larger probe fills narrow clefts: the solvent-accessible volume of
+    # the molecule grows, and the parameter is reported.
+    run pockets "$pdb" -o "$tmp/a" --json
+    expect_json_object
+    v14=$(grep -o '"sa_volume":[0-9.]*' "$tmp/out" | head -n 1 | cut -d: -f2)
+    run pockets "$pdb" -o "$tmp/b" --probe 2 --json
+    expect_json_object
+    expect_json probe 2.0
+    v20=$(grep -o '"sa_volume":[0-9.]*' "$tmp/out" | head -n 1 | cut -d: -f2)
+    [[ ${v20%.*} -gt ${v14%.*} ]] || fail "sa_volume $v20 at probe 2 not above $v14 at probe 1.4"
+    ;;
+  missing_file)
+    run pockets "$tmp/nope.pdb" -o "$tmp/o"
+    expect_error "$tmp/nope.pdb"
+    [[ ! -e "$tmp/o" ]] || fail "the output directory was left behind"
+    ;;
+  not_structure)
+    run pockets "$data/cube_grid.xyz" -o "$tmp/o"
+    expect_error "$data/cube_grid.xyz: not a structure file"
+    [[ ! -e "$tmp/o" ]] || fail "the output directory was created"
+    ;;
+  invalid_structure)
+    printf 'HETATM garbage\nthis is not a structure\n' >"$tmp/bad.pdb"
+    cd "$tmp"
+    run pockets bad.pdb
+    expect_error "bad.pdb"
+    [[ $(tree_of "$tmp") == "bad.pdb err out" ]] || fail "files left: $(tree_of "$tmp")"
+    ;;
+  outdir_under_file)
+    echo "a file" >"$tmp/file"
+    run pockets "$pdb" -o "$tmp/file/o"
+    expect_error "$tmp/file/o: cannot create the output directory"
+    [[ $(cat "$tmp/file") == "a file" ]] || fail "the file was changed"
+    ;;
+  outdir_is_file)
+    echo "a file" >"$tmp/file"
+    run pockets "$pdb" -o "$tmp/file"
+    expect_error "$tmp/file: cannot create the output directory"
+    [[ $(cat "$tmp/file") == "a file" ]] || fail "the file was changed"
+    ;;
+  outdir_missing_parent)
+    run pockets "$pdb" -o "$tmp/missing/o"
+    expect_error "$tmp/missing/o: cannot create the output directory"
+    [[ ! -e "$tmp/missing" ]] || fail "the parent was created"
+    ;;
+  outdir_read_only)
+    mkdir -p "$tmp/locked/o"
+    chmod 555 "$tmp/locked/o"
+    if touch "$tmp/locked/o/probe" 2>/dev/null; then
+      echo "SKIP [$case_name]: a read-only directory is writable here (root)"
+      exit 77
+    fi
+    run pockets "$pdb" -o "$tmp/locked/o"
+    expect_error "$tmp/locked/o" 'Permission denied'
+    [[ -z $(tree_of "$tmp/locked/o") ]] || fail "files left: $(tree_of "$tmp/locked/o")"
+    ;;
+  usage_errors)
+    for args in "--probe -1" "--probe nan" "--min-volume -5" "--mesh vrml" "--weighted" ""; do
+      # shellcheck disable=SC2086
+      run pockets $args ${args:+"$pdb"} -o "$tmp/o"
+      [[ $rc -eq 2 ]] || fail "'pockets $args': exit code $rc, expected 2"
+      [[ $(wc -l <"$tmp/err") -eq 1 ]] || fail "'pockets $args': stderr is not one line"
+      [[ ! -e "$tmp/o" ]] || fail "'pockets $args': the output directory was created"
+    done
+    ;;
+  help)
+    run pockets --help
+    expect_success
+    for option in -o,--output-dir --probe --min-volume --mesh --json --chains --keep-hetero; do
+      grep -qe "$option" "$tmp/out" || fail "--help does not mention $option"
+    done
+    if grep -q -e "--weighted" "$tmp/out"; then fail "--help offers --weighted"; fi
+    ;;
+  *)
+    echo "unknown case: $case_name" >&2
+    exit 2
+    ;;
+esac
+echo "PASS [$case_name]"

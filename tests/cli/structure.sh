@@ -1,0 +1,172 @@
+#!/usr/bin/env bash
+# CLI tests of structure files as input (any subcommand taking FILE): the
+# atom selection options, atoms as weighted points (ProtOr radius + probe),
+# and one-line errors for bad files. One case per CTest test.
+# Usage: structure.sh ALPHAPOCKET REPO_ROOT CASE
+#
+# Atom counts were checked against the files' ATOM/HETATM records (see
+# tests/test_structure.cpp): 1fbl.pdb has 3294 atoms, 2966 protein, 295
+# waters, 33 hetero (HTA, 4 Ca, 2 Zn); 1d3z_models_1_2.pdb.gz two NMR
+# models of 1231 atoms, 629 of them hydrogens; 1pfe.cif.gz a DNA strand
+# (chain A, 161 atoms kept) and echinomycin (chain B, 52).
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
+bad=$data/bad
+
+expect_success() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+}
+
+expect_points() {  # N: a successful delaunay --json run on N points
+  expect_json_object
+  expect_json points "$1"
+}
+
+# Four carbon atoms (radius 1.70) at the corners of a regular tetrahedron of
+# edge 10 A, as a ligand: kept with --keep-hetero.
+four_carbons() {
+  local f=$tmp/four.pdb
+  {
+    echo "HETATM    1  C1  LIG A   1       0.000   0.000   0.000  1.00  0.00           C"
+    echo "HETATM    2  C2  LIG A   1      10.000   0.000   0.000  1.00  0.00           C"
+    echo "HETATM    3  C3  LIG A   1       5.000   8.660   0.000  1.00  0.00           C"
+    echo "HETATM    4  C4  LIG A   1       5.000   2.887   8.165  1.00  0.00           C"
+  } >"$f"
+  echo "$f"
+}
+
+case $case_name in
+  default_selection)
+    run delaunay "$data/1fbl.pdb" --json
+    expect_points 2966
+    grep -qF "1fbl.pdb: PDB, model 1: kept 2966 of 3294 atoms; dropped: 295 water, 33 hetero; 7 hetero groups" \
+      "$tmp/err" || fail "no selection summary logged"
+    grep -q "radius = ProtOr radius + probe 1.4 A" "$tmp/err" || fail "radii and probe not logged"
+    ;;
+  keep_all)
+    run delaunay "$data/1fbl.pdb" --keep-waters --keep-hetero --json
+    expect_points 3294
+    ;;
+  keep_waters)
+    run delaunay "$data/1fbl.pdb" --keep-waters --json
+    expect_points 3261
+    ;;
+  mmcif_gz)
+    run delaunay "$data/1fbl.cif.gz" --keep-hetero --json
+    expect_points 2999
+    grep -qF "mmCIF (gzip), model 1: kept 2999 of 3294 atoms" "$tmp/err" || fail "format not logged"
+    ;;
+  hydrogens)
+    run delaunay "$data/1d3z_models_1_2.pdb.gz" --json
+    expect_points 602
+    run delaunay "$data/1d3z_models_1_2.pdb.gz" --keep-hydrogens --json
+    expect_points 1231
+    ;;
+  model)
+    run delaunay "$data/1d3z_models_1_2.pdb.gz" --model 2 --json
+    expect_points 602
+    grep -qF "model 2 of 2: kept 602 of 1231 atoms" "$tmp/err" || fail "model not logged"
+    ;;
+  chains)
+    run delaunay "$data/1pfe.cif.gz" --chains A --json
+    expect_points 161
+    run delaunay "$data/1pfe.cif.gz" --chains B --json
+    expect_points 38
+    run delaunay "$data/1pfe.cif.gz" --chains A,B --json
+    expect_points 199
+    run delaunay "$data/1pfe.cif.gz" --chains B --chains A --json
+    expect_points 199
+    ;;
+  probe)
+    # Each atom is the ball of radius 1.70 + probe: a component is born at
+    # -(1.70 + probe)^2. 1.7 + 0.3 is exactly 2 in double precision.
+    f=$(four_carbons)
+    run persistence "$f" --keep-hetero --probe 0.3
+    expect_success
+    [[ $(grep -c '^0 -4 ' "$tmp/out") -eq 4 ]] || fail "components not born at -(1.7 + 0.3)^2 = -4"
+    run persistence "$f" --keep-hetero --probe 0
+    expect_success
+    [[ $(grep -c '^0 -2.8899999999999997 ' "$tmp/out") -eq 4 ]] || fail "components not born at -1.7^2"
+    run persistence "$f" --keep-hetero
+    expect_success
+    [[ $(grep -c '^0 -9.609999999999998 ' "$tmp/out") -eq 4 ]] || fail "components not born at -(1.7 + 1.4)^2"
+    ;;
+  weighted_is_implied)
+    # --weighted changes nothing for a structure file.
+    run -q persistence "$data/1UYD.pdb"
+    cp "$tmp/out" "$tmp/plain"
+    run -q persistence "$data/1UYD.pdb" --weighted
+    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    cmp -s "$tmp/out" "$tmp/plain" || fail "--weighted changed the result of a structure file"
+    ;;
+  help)
+    run delaunay --help
+    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    for option in --probe --model --chains --keep-hydrogens --keep-waters --keep-hetero; do
+      grep -q -- "$option" "$tmp/out" || fail "$option not in --help"
+    done
+    grep -q "ProtOr" "$tmp/out" || fail "radii not explained in --help"
+    ;;
+  point_file_with_structure_option)
+    run delaunay "$data/cube_grid.xyz" --probe 1 --keep-waters --json
+    expect_error "$data/cube_grid.xyz: a point file, but --probe, --keep-waters are for structure files"
+    ;;
+  negative_probe)
+    run delaunay "$data/1fbl.pdb" --probe -1
+    expect_error "--probe"
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2 for a wrong command line"
+    ;;
+  missing_chain)
+    run delaunay "$data/1fbl.pdb" --chains B --json
+    expect_error "$data/1fbl.pdb: no chain 'B' in model 1 (chains: A)"
+    ;;
+  missing_model)
+    run delaunay "$data/1fbl.pdb" --model 2 --json
+    expect_error "$data/1fbl.pdb: no model 2 (models: 1)"
+    ;;
+  only_ligands)
+    # Without --keep-hetero nothing is left.
+    run delaunay "$(four_carbons)" --json
+    expect_error "$tmp/four.pdb: no atoms left after the selection (model 1 has 4 atoms; dropped: 4 hetero)"
+    ;;
+  three_atoms)
+    run delaunay "$bad/three_atoms.pdb" --json
+    expect_error "$bad/three_atoms.pdb: only 3 atoms after the selection, at least 4 are needed"
+    ;;
+  empty)
+    run spectrum "$bad/empty.pdb" --json
+    expect_error "$bad/empty.pdb: file is empty"
+    ;;
+  not_structure)
+    run delaunay "$bad/not_structure.pdb" --json
+    expect_error "$bad/not_structure.pdb: not a PDB or mmCIF file"
+    ;;
+  truncated_cif)
+    run persistence "$bad/truncated.cif"
+    expect_error "$bad/truncated.cif:3:1: Wrong number of values in the loop"
+    ;;
+  truncated_gz)
+    run shape "$bad/truncated.pdb.gz" --alpha-sq 0 -o "$tmp/shape.ply"
+    expect_error "$bad/truncated.pdb.gz: truncated gzip data"
+    [[ ! -e "$tmp/shape.ply" ]] || fail "a mesh was written"
+    ;;
+  corrupt_gz)
+    run delaunay "$bad/corrupt.pdb.gz" --json
+    expect_error "$bad/corrupt.pdb.gz: corrupt gzip data"
+    ;;
+  short_line)
+    run delaunay "$bad/short_line.pdb" --json
+    expect_error "$bad/short_line.pdb: Problem in line 2: The line is too short"
+    ;;
+  directory)
+    mkdir "$tmp/dir.pdb"
+    run delaunay "$tmp/dir.pdb" --json
+    expect_error "$tmp/dir.pdb: is a directory, not a file"
+    ;;
+  *)
+    echo "unknown case: $case_name" >&2
+    exit 2
+    ;;
+esac
+echo "PASS [$case_name]"

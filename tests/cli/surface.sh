@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# CLI tests of `alphapocket surface`, one case per CTest test.
+# Usage: surface.sh ALPHAPOCKET REPO_ROOT CASE
+#
+# Expected areas: 1a26A.pdb (2769 atoms without its ligand, ProtOr radii,
+# probe 1.4) has a SASA of 16564.3 A^2; FreeSASA's Lee-Richards gives
+# 16564.29 with 2000 slices per atom (tests/test_surface_area.cpp compares
+# atom by atom). Two unit balls at distance 1: volume 9 pi / 4, area 6 pi.
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
+
+expect_success() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+}
+
+# NUMBER rounded to DIGITS decimals, with awk (in every Debian base system).
+rounded() {  # NUMBER DIGITS
+  awk -v x="$1" -v d="$2" 'BEGIN { printf "%.*f", d, x }'
+}
+
+expect_rounded() {  # KEY DIGITS VALUE
+  local got
+  got=$(rounded "$(json_value "$1")" "$2")
+  [[ "$got" == "$3" ]] || fail "\"$1\" rounds to '$got', expected '$3'"
+}
+
+# Two overlapping unit balls and two balls of radius 0 (the triangulation
+# needs four points that are not coplanar).
+two_balls() {
+  printf '0 0 0 1\n1 0 0 1\n0 50 0 0\n0 0 50 0\n' >"$tmp/two.xyz"
+  echo "$tmp/two.xyz"
+}
+
+case $case_name in
+  json)
+    run -q surface "$pdb" --json
+    expect_json_object
+    expect_json atoms 2769
+    expect_json probe 1.4
+    expect_json ms_volume null
+    expect_json radii '"ProtOr"'
+    expect_rounded sa_area 1 16564.3
+    expect_rounded sa_volume 1 67402.5
+    grep -q per_atom "$tmp/out" && fail "per-atom areas without --per-atom"
+    ;;
+  summary)
+    run surface "$pdb"
+    expect_success
+    grep -q '1a26A.pdb: 2769 atoms, ProtOr radii + probe 1.4 A' "$tmp/out" || fail "no header line"
+    grep -q '^solvent-accessible area    16564.322 A^2$' "$tmp/out" || fail "no area line"
+    grep -q '^solvent-accessible volume  67402.524 A^3$' "$tmp/out" || fail "no volume line"
+    grep -q '^solvent-excluded volume    not computed$' "$tmp/out" || fail "no excluded volume line"
+    grep -q 'union of balls' "$tmp/err" || fail "timings not logged"
+    ;;
+  per_atom_json)
+    # One entry per atom, in file order; they sum to the total.
+    run -q surface "$pdb" --json --per-atom
+    expect_json_object
+    [[ $(grep -o '"serial":' "$tmp/out" | wc -l) -eq 2769 ]] || fail "expected 2769 per-atom entries"
+    grep -q '"per_atom":\[{"serial":1,"name":"N","residue":"LYS","seq_num":1,"icode":"","chain":"A","area":45.5655' \
+      "$tmp/out" || fail "first atom entry"
+    sum=$(grep -o '"area":[^,}]*' "$tmp/out" | cut -d: -f2 | awk '{ s += $1 } END { printf "%.6f", s }')
+    [[ $(rounded "$sum" 3) == $(rounded "$(json_value sa_area)" 3) ]] || fail "per-atom areas sum to $sum"
+    # Buried atoms have area 0 exactly, never a negative rounding residue.
+    grep -q '"area":-' "$tmp/out" && fail "a negative per-atom area"
+    [[ $(grep -o '"area":0.0}' "$tmp/out" | wc -l) -gt 1000 ]] || fail "buried atoms should have area 0.0"
+    ;;
+  per_atom_text)
+    run -q surface "$pdb" --per-atom
+    expect_success
+    [[ $(grep -c '^[0-9]* [^ ]* [A-Z]* [0-9A-Z]* A [0-9.]*$' "$tmp/out") -eq 2769 ]] || fail "expected 2769 atom lines"
+    grep -q '^serial name residue seq_num chain area$' "$tmp/out" || fail "no table header"
+    ;;
+  probe)
+    # The van der Waals surface (probe 0); with probe 0.001 FreeSASA (2000
+    # slices) gives 36852.59 A^2 and this command 36852.69.
+    run -q surface "$pdb" --probe 0 --json
+    expect_json_object
+    expect_json probe 0.0
+    expect_rounded sa_area 1 36848.1
+    expect_rounded sa_volume 1 32857.3
+    ;;
+  deterministic)
+    run -q surface "$pdb" --json --per-atom
+    cp "$tmp/out" "$tmp/first"
+    run -q surface "$pdb" --json --per-atom
+    cmp -s "$tmp/out" "$tmp/first" || fail "two runs differ"
+    ;;
+  weighted_file)
+    run -q surface "$(two_balls)" --weighted --json --per-atom
+    expect_json_object
+    expect_json atoms 4
+    expect_json probe null
+    expect_json radii '"file"'
+    expect_rounded sa_volume 10 "$(rounded 7.0685834705770345 10)"  # 9 pi / 4
+    expect_rounded sa_area 10 "$(rounded 18.84955592153876 10)"     # 6 pi
+    grep -q '"per_atom":\[{"index":0,"area":9.42477796076938' "$tmp/out" || fail "per-ball area: 3 pi"
+    ;;
+  unweighted_file)
+    printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/points.xyz"
+    run surface "$tmp/points.xyz"
+    expect_error "$tmp/points.xyz" 'no balls without --weighted'
+    ;;
+  point_file_with_probe)
+    run surface "$(two_balls)" --weighted --probe 1
+    expect_error "$tmp/two.xyz" 'but --probe is for structure files'
+    ;;
+  missing_file)
+    run surface "$tmp/none.pdb"
+    expect_error "$tmp/none.pdb"
+    ;;
+  invalid_structure)
+    printf 'ATOM  garbage\n' >"$tmp/bad.pdb"
+    run surface "$tmp/bad.pdb"
+    expect_error "$tmp/bad.pdb"
+    ;;
+  negative_probe)
+    run surface "$pdb" --probe -1
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2 (usage error)"
+    [[ ! -s "$tmp/out" ]] || fail "stdout is not empty"
+    grep -q '^ERROR: .*--probe' "$tmp/err" || fail "no usage error naming --probe"
+    ;;
+  help)
+    run surface --help
+    expect_success
+    grep -q -- '--per-atom' "$tmp/out" || fail "--per-atom not in the help"
+    grep -q -- '--probe' "$tmp/out" || fail "--probe not in the help"
+    ;;
+  *)
+    echo "unknown case: $case_name" >&2
+    exit 2
+    ;;
+esac
+echo "PASS [$case_name]"

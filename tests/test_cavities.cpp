@@ -1,0 +1,351 @@
+// molecule::find_cavities on synthetic ball sets with known answers (a
+// hollow shell, a shell with a hole, a ring, a grid of cubic voids) and on
+// a real protein.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <vector>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/discrete_flow.hpp"
+#include "alpha/error.hpp"
+#include "molecule/cavities.hpp"
+#include "molecule/structure.hpp"
+#include "point_sets.hpp"
+
+using alpha::Index;
+using alpha::Vec3;
+using molecule::Cavities;
+using molecule::Cavity;
+
+namespace {
+
+// The balls (points, van der Waals radii) and the complex of the balls
+// inflated by the probe, kept together.
+struct Balls {
+  std::vector<Vec3> points;
+  std::vector<double> radii;
+  double probe;
+  alpha::Triangulation triangulation;
+  alpha::AlphaComplex complex;
+
+  Balls(std::vector<Vec3> p, std::vector<double> r, double pr)
+      : points(p), radii(r), probe(pr), triangulation(std::move(p), inflated(r, pr)), complex(triangulation) {}
+
+  static std::vector<double> inflated(const std::vector<double>& r, double probe) {
+    std::vector<double> w;
+    for (double x : r) w.push_back((x + probe) * (x + probe));
+    return w;
+  }
+  // Every cavity, however small (min_volume 0: the voids are the b2 classes).
+  Cavities cavities(double split_persistence = molecule::CavityOptions{}.split_persistence) const {
+    molecule::CavityOptions options;
+    options.probe = probe;
+    options.min_volume = 0;
+    options.split_persistence = split_persistence;
+    return molecule::find_cavities(complex, radii, options);
+  }
+  // Whether x lies in no probe-inflated ball.
+  bool free(const Vec3& x) const {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double dx = x.x - points[i].x, dy = x.y - points[i].y, dz = x.z - points[i].z;
+      const double rr = radii[i] + probe;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) return false;
+    }
+    return true;
+  }
+};
+
+// n points spread evenly on the sphere of radius R about the origin.
+std::vector<Vec3> fibonacci_sphere(int n, double R) {
+  std::vector<Vec3> pts;
+  const double golden = M_PI * (3 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1 - (i + 0.5) * 2 / n, rho = std::sqrt(1 - z * z), phi = golden * i;
+    pts.push_back({R * rho * std::cos(phi), R * rho * std::sin(phi), R * z});
+  }
+  return pts;
+}
+
+double tetra_volume(const alpha::Triangulation& t, Index c) {
+  const auto& v = t.cell(c).v;
+  const Vec3 &a = t.point(v[0]), &b = t.point(v[1]), &d = t.point(v[2]), &e = t.point(v[3]);
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = d.x - a.x, vy = d.y - a.y, vz = d.z - a.z,
+               wx = e.x - a.x, wy = e.y - a.y, wz = e.z - a.z;
+  return std::fabs(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6;
+}
+
+// Properties every result must have, whatever the input.
+void check_invariants(const Balls& b, const Cavities& cav) {
+  const alpha::AlphaComplex& ac = b.complex;
+  const alpha::Triangulation& t = b.triangulation;
+  const alpha::Simplices& s = ac.simplices();
+  const Index level = ac.level(0.0);
+  CHECK(cav.voids.size() == ac.betti(level)[2]);
+  std::set<Index> seen;
+  auto check_cavity = [&](const Cavity& c, bool pocket) {
+    REQUIRE(!c.cells.empty());
+    REQUIRE(std::is_sorted(c.cells.begin(), c.cells.end()));
+    std::set<Index> vertices;
+    double volume = 0;
+    for (Index cell : c.cells) {
+      REQUIRE(!t.is_infinite(cell));
+      REQUIRE(ac.cell_entry(cell) >= level);  // empty
+      REQUIRE(seen.insert(cell).second);      // in one cavity only
+      for (Index v : t.cell(cell).v) vertices.insert(v);
+      volume += tetra_volume(t, cell);
+    }
+    for (Index a : c.lining_atoms) CHECK(vertices.count(a) == 1);
+    CHECK(c.sa_volume >= 0);
+    CHECK(c.sa_volume <= volume * (1 + 1e-9));
+    CHECK(c.sa_area >= 0);
+    CHECK(c.max_alpha_sq > 0);
+    CHECK(c.fill_alpha_sq == c.max_alpha_sq);
+    CHECK(c.close_alpha_sq <= c.fill_alpha_sq);
+    CHECK((pocket ? c.close_alpha_sq > 0 : c.close_alpha_sq <= 0));
+    CHECK(c.mouths.empty() == !pocket);
+    double mouth_area = 0;
+    const std::set<Index> cells(c.cells.begin(), c.cells.end());
+    for (const auto& m : c.mouths) {
+      REQUIRE(!m.triangles.empty());
+      CHECK(m.area >= 0);
+      mouth_area += m.area;
+      for (Index f : m.triangles) {
+        REQUIRE(ac.triangle_interval(f).entry >= level);  // an empty facet
+        const auto& tc = s.triangle_cells(f);
+        CHECK(cells.count(tc[0]) + cells.count(tc[1]) == 1);  // between the pocket and the outside
+      }
+    }
+    CHECK(c.mouth_area == Approx(mouth_area));
+    CHECK(c.buriedness >= 0);
+    CHECK(c.buriedness <= 1);
+    if (!pocket) CHECK(c.depth == 0);
+  };
+  for (const Cavity& c : cav.pockets) check_cavity(c, true);
+  for (const Cavity& c : cav.voids) check_cavity(c, false);
+  for (const auto* list : {&cav.pockets, &cav.voids})
+    for (std::size_t k = 1; k < list->size(); ++k) CHECK((*list)[k - 1].score >= (*list)[k].score);
+  for (std::size_t k = 0; k < cav.tunnels.size(); ++k) {
+    const auto& tn = cav.tunnels[k];
+    CHECK(tn.birth_alpha_sq <= 0);
+    CHECK(tn.death_alpha_sq > 0);
+    CHECK(tn.bottleneck_radius >= b.probe);  // alive at alpha_sq = 0: the probe passes
+    REQUIRE(tn.bottleneck_triangle < s.num_triangles());
+    const auto triangle = s.triangle(tn.bottleneck_triangle);
+    std::vector<Index> tri(triangle.begin(), triangle.end());
+    std::sort(tri.begin(), tri.end());
+    CHECK(tn.lining_atoms == tri);
+    if (k > 0) CHECK(cav.tunnels[k - 1].death_alpha_sq >= tn.death_alpha_sq);
+  }
+}
+
+bool same(const Cavity& a, const Cavity& b) {
+  return a.cells == b.cells && a.sa_volume == b.sa_volume && a.sa_area == b.sa_area && a.score == b.score &&
+         a.center == b.center && a.lining_atoms == b.lining_atoms && a.mouths.size() == b.mouths.size() &&
+         a.depth == b.depth && a.close_alpha_sq == b.close_alpha_sq;
+}
+
+}  // namespace
+
+TEST_CASE("Cavities: a hollow shell of balls holds exactly one void", "[cavities]") {
+  const double R = 8, r = 1.2, probe = 0.3, rho = r + probe;
+  const Balls b(fibonacci_sphere(400, R), std::vector<double>(400, r), probe);
+  const Cavities cav = b.cavities();
+  check_invariants(b, cav);
+  REQUIRE(cav.voids.size() == 1);
+  CHECK(cav.pockets.empty());
+  const Cavity& v = cav.voids.front();
+  // The inner cells share (up to rounding) the sphere centred at the
+  // origin, orthogonal to every inflated ball: size R^2 - rho^2.
+  CHECK(v.fill_alpha_sq == Approx(R * R - rho * rho).epsilon(1e-9));
+  CHECK(std::hypot(v.center.x, v.center.y, v.center.z) < 0.05 * R);
+  // Its free volume against a midpoint-rule integration of the ball of
+  // radius R minus the inflated balls.
+  const double h = 0.1;
+  double free_volume = 0;
+  for (double x = -R + h / 2; x < R; x += h)
+    for (double y = -R + h / 2; y < R; y += h)
+      for (double z = -R + h / 2; z < R; z += h) {
+        const double d2 = x * x + y * y + z * z;
+        if (d2 >= R * R) continue;
+        if (d2 < (R - rho) * (R - rho) || b.free({x, y, z})) free_volume += h * h * h;
+      }
+  CHECK(v.sa_volume == Approx(free_volume).epsilon(0.02));
+  CHECK(v.sa_area > 0);
+}
+
+TEST_CASE("Cavities: a shell with a hole is one pocket with one mouth", "[cavities]") {
+  const double R = 8, r = 1.2, probe = 0.3;
+  std::vector<Vec3> pts;
+  for (const Vec3& p : fibonacci_sphere(400, R))
+    if (p.z < 0.8 * R) pts.push_back(p);  // a hole of radius 0.6 R = 4.8 about the north pole
+  const Balls b(pts, std::vector<double>(pts.size(), r), probe);
+  const Cavities cav = b.cavities();
+  check_invariants(b, cav);
+  CHECK(cav.voids.empty());
+  REQUIRE(cav.pockets.size() == 1);
+  const Cavity& p = cav.pockets.front();
+  REQUIRE(p.mouths.size() == 1);
+  const double hole = 0.6 * R;
+  CHECK(p.mouth_area > 0);
+  CHECK(p.mouth_area < M_PI * hole * hole);
+  CHECK(p.buriedness > 0.5);  // mostly wall
+  // The deepest cells lie near the south pole, about 1.8 R below the mouth.
+  CHECK(p.depth > 1.4 * R);
+  CHECK(p.depth < 1.8 * R);
+  // Through the hole the pocket never closes before it fills.
+  CHECK(p.close_alpha_sq > 0);
+}
+
+TEST_CASE("Cavities: a ring of balls is a tunnel with its analytic bottleneck", "[cavities]") {
+  // The 12 integer points of the circle x^2 + y^2 = 25 (cocircular
+  // exactly), and two far poles so that the input is not coplanar.
+  std::vector<Vec3> pts;
+  for (int x = -5; x <= 5; ++x)
+    for (int y = -5; y <= 5; ++y)
+      if (x * x + y * y == 25) pts.push_back({double(x), double(y), 0});
+  REQUIRE(pts.size() == 12);
+  pts.push_back({0, 0, 10});
+  pts.push_back({0, 0, -10});
+  const double r = 1.5, probe = 0.25, rho = r + probe;  // neighbours (at most sqrt(10) apart) overlap
+  const Balls b(pts, std::vector<double>(pts.size(), r), probe);
+  const Cavities cav = b.cavities();
+  check_invariants(b, cav);
+  REQUIRE(cav.tunnels.size() == 1);
+  const auto& tn = cav.tunnels.front();
+  // The hole's disc fills when the plane's triangles (circumradius 5) enter,
+  // and the largest probe through the ring's centre touches all 12 atoms.
+  CHECK(tn.death_alpha_sq == Approx(25 - rho * rho).epsilon(1e-12));
+  CHECK(tn.bottleneck_radius == Approx(5 - r).epsilon(1e-12));
+  for (Index a : tn.lining_atoms) CHECK(a < 12);
+  CHECK(cav.voids.empty());
+}
+
+TEST_CASE("Cavities: a grid of balls has one void per cube, with analytic spectrum values", "[cavities]") {
+  // Radius 0.5 + probe 0.25: neighbours and face diagonals overlap (faces
+  // closed: circumradius^2 of a face half is 1/2 < 0.5625), cube centres
+  // stay free (circumradius^2 3/4). Exact binary values: no rounding.
+  const std::vector<Vec3> pts = testing::grid_points(5);
+  const Balls b(pts, std::vector<double>(pts.size(), 0.5), 0.25);
+  const Cavities cav = b.cavities();
+  check_invariants(b, cav);
+  REQUIRE(cav.voids.size() == 64);
+  CHECK(cav.pockets.empty());
+  // The void's free volume, by a midpoint rule over the unit cube (only
+  // its 8 corner balls reach it).
+  const double h = 0.005;
+  double free_volume = 0;
+  for (double x = h / 2; x < 1; x += h)
+    for (double y = h / 2; y < 1; y += h)
+      for (double z = h / 2; z < 1; z += h) {
+        bool covered = false;
+        for (int c = 0; c < 8 && !covered; ++c) {
+          const double dx = x - (c & 1), dy = y - ((c >> 1) & 1), dz = z - ((c >> 2) & 1);
+          covered = dx * dx + dy * dy + dz * dz < 0.5625;
+        }
+        if (!covered) free_volume += h * h * h;
+      }
+  for (const Cavity& v : cav.voids) {
+    CHECK(v.fill_alpha_sq == 0.75 - 0.5625);
+    CHECK(v.close_alpha_sq == 0.5 - 0.5625);
+    CHECK(v.sa_volume == Approx(free_volume).epsilon(0.01));
+    CHECK(v.lining_atoms.size() == 8);
+    // The centre of a cube.
+    CHECK(v.center.x - std::floor(v.center.x) == Approx(0.5));
+    CHECK(v.center.y - std::floor(v.center.y) == Approx(0.5));
+    CHECK(v.center.z - std::floor(v.center.z) == Approx(0.5));
+  }
+  // Deterministic: the same input gives the same result, bit for bit.
+  const Balls again(pts, std::vector<double>(pts.size(), 0.5), 0.25);
+  const Cavities cav2 = again.cavities();
+  REQUIRE(cav2.voids.size() == cav.voids.size());
+  for (std::size_t k = 0; k < cav.voids.size(); ++k) CHECK(same(cav.voids[k], cav2.voids[k]));
+}
+
+TEST_CASE("Cavities: degenerate and small inputs", "[cavities]") {
+  // A grid whose balls do not touch: every orthocenter is a cube centre,
+  // on a facet or inside the cell, so nothing flows out through the hull:
+  // all the space is one open region (split into pockets), nothing closed.
+  const std::vector<Vec3> pts = testing::grid_points(4);
+  const Balls sparse(pts, std::vector<double>(pts.size(), 0.2), 0.1);
+  const Cavities open = sparse.cavities();
+  check_invariants(sparse, open);
+  CHECK(open.voids.empty());
+  std::size_t cells = 0;
+  for (const Cavity& p : open.pockets) cells += p.cells.size();
+  CHECK(cells == sparse.triangulation.num_finite_cells());
+  // Balls of radius 0.6 with a zero probe: faces open, centres free; every
+  // grid level in between keeps the invariants.
+  for (double r : {0.45, 0.55, 0.65, 0.75, 0.85, 0.95}) {
+    const Balls g(pts, std::vector<double>(pts.size(), r), 0.0);
+    check_invariants(g, g.cavities());
+  }
+  // Random weighted balls, a hundred or so atoms.
+  const std::vector<Vec3> rnd = testing::random_points(150, 3, 12.0);
+  const std::vector<double> radii = testing::random_weights(150, 4, 1.0, 2.0);
+  const Balls r(rnd, radii, 1.4);
+  check_invariants(r, r.cavities());
+}
+
+TEST_CASE("Cavities: inconsistent input is refused", "[cavities]") {
+  const std::vector<Vec3> pts = testing::grid_points(3);
+  const Balls b(pts, std::vector<double>(pts.size(), 0.5), 0.25);
+  molecule::CavityOptions options;
+  options.probe = 0.25;
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex, std::vector<double>(3, 0.5), options), alpha::Error);
+  options.probe = 1.4;  // not the probe the complex was built with
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+  options.probe = -1;
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+}
+
+TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
+  const molecule::Structure st = molecule::read_structure(ALPHAPOCKET_EXAMPLES_DATA "/1a26A.pdb");
+  std::vector<Vec3> pts;
+  std::vector<double> radii;
+  for (const auto& a : st.atoms) pts.push_back(a.position), radii.push_back(a.radius);
+  const Balls b(pts, radii, 1.4);
+  const Cavities cav = b.cavities();
+  check_invariants(b, cav);
+  REQUIRE(!cav.pockets.empty());
+  for (const Cavity& p : cav.pockets) {
+    CHECK(p.sa_volume > 0);
+    CHECK(p.depth > 0);
+    CHECK(!p.lining_atoms.empty());
+  }
+  // The best pocket is a real one: large and well buried.
+  CHECK(cav.pockets.front().sa_volume > 100);
+  for (const Cavity& p : cav.pockets) CHECK(p.score == molecule::cavity_score(p));
+
+  // An infinite split_persistence gives CASTp's pockets: one per region of
+  // the flow with a mouth; the split pockets partition the same cells.
+  const Cavities castp = b.cavities(std::numeric_limits<double>::infinity());
+  check_invariants(b, castp);
+  const Index level = b.complex.level(0.0);
+  const alpha::DiscreteFlow flow(b.complex, level);
+  std::set<Index> with_mouth;
+  const alpha::Triangulation& t = b.triangulation;
+  for (Index c = 0; c < t.num_cells(); ++c)
+    for (int k = 0; k < 4; ++k)
+      if (flow.region(c) != alpha::kNone && flow.outside(t.cell(c).n[k]) &&
+          b.complex.triangle_interval(b.complex.simplices().cell_triangle(c, k)).entry >= level)
+        with_mouth.insert(flow.region(c));
+  CHECK(castp.pockets.size() == with_mouth.size());
+  auto all_cells = [](const std::vector<Cavity>& list) {
+    std::vector<Index> cells;
+    for (const Cavity& c : list) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
+    std::sort(cells.begin(), cells.end());
+    return cells;
+  };
+  CHECK(all_cells(castp.pockets) == all_cells(cav.pockets));
+  CHECK(cav.pockets.size() > castp.pockets.size());
+  CHECK(castp.voids.size() == cav.voids.size());
+  // Deterministic.
+  const Balls again(pts, radii, 1.4);
+  const Cavities cav2 = again.cavities();
+  REQUIRE(cav2.pockets.size() == cav.pockets.size());
+  for (std::size_t k = 0; k < cav.pockets.size(); ++k) CHECK(same(cav.pockets[k], cav2.pockets[k]));
+}

@@ -1,0 +1,517 @@
+// The outputs of `alphapocket pockets` (molecule::PocketOutputDir and what
+// it writes): report.json against its documented schema (README.md),
+// pockets.csv, meshes read back through OpenMesh, pockets.pml, pockets.pdb
+// read back through the structure reader; hand-made cavities on a grid for
+// the meshes; output directory errors.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
+#include "molecule/cavity_mesh.hpp"
+#include "molecule/pocket_colors.hpp"
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/structure.hpp"
+#include "mesh_checks.hpp"
+#include "point_sets.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;  // keeps the file's key order
+using testing::ReadMesh;
+using testing::TempDir;
+
+namespace {
+
+const std::string kStructure = std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb";
+
+// One run on examples/data/1a26A.pdb, written once for all tests below.
+struct Run {
+  TempDir dir;
+  molecule::Structure structure;
+  molecule::PocketSearch search;
+  molecule::PocketRun run;
+  std::vector<std::string> written;
+  json report;
+
+  Run() : structure(molecule::read_structure(kStructure)), search(molecule::search_pockets(structure, {})) {
+    run.file = kStructure;
+    run.structure = &structure;
+    run.version = "test";
+    run.search = &search;
+    run.mesh_format = "ply";
+    molecule::PocketOutputDir out((dir / "out").string());
+    written = out.write(run, kStructure);
+    report = json::parse(testing::read_text(dir / "out/report.json"));
+  }
+  fs::path file(const std::string& name) const { return dir / ("out/" + name); }
+};
+
+const Run& the_run() {
+  static const Run run;
+  return run;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(s);
+  while (std::getline(in, part, sep)) parts.push_back(part);
+  if (!s.empty() && s.back() == sep) parts.emplace_back();
+  return parts;
+}
+
+// Volume of the tetrahedra of a cavity.
+double cells_volume(const alpha::Triangulation& t, const std::vector<alpha::Index>& cells) {
+  double v = 0;
+  for (const alpha::Index c : cells) {
+    const auto& cv = t.cell(c).v;
+    const alpha::Vec3 &a = t.point(cv[0]), &b = t.point(cv[1]), &d = t.point(cv[2]), &e = t.point(cv[3]);
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+    const double vx = d.x - a.x, vy = d.y - a.y, vz = d.z - a.z;
+    const double wx = e.x - a.x, wy = e.y - a.y, wz = e.z - a.z;
+    v += std::fabs(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6;
+  }
+  return v;
+}
+
+// Faces of the colour c and of its mouth tint.
+std::pair<std::size_t, std::size_t> count_colors(const ReadMesh& mesh, molecule::Rgb c) {
+  const molecule::Rgb tint = molecule::mouth_tint(c);
+  std::size_t plain = 0, tinted = 0;
+  for (auto f : mesh.faces()) {
+    const auto col = mesh.color(f);
+    if (col[0] == c.r && col[1] == c.g && col[2] == c.b) ++plain;
+    if (col[0] == tint.r && col[1] == tint.g && col[2] == tint.b) ++tinted;
+  }
+  return {plain, tinted};
+}
+
+void check_number(const json& j, const char* key, bool non_negative = true) {
+  INFO(key);
+  REQUIRE(j.contains(key));
+  REQUIRE(j[key].is_number());
+  if (non_negative) CHECK(j[key].get<double>() >= 0);
+}
+
+// The cavity entries of report.json: keys, types, ranks 1..n, scores not
+// increasing, lining residues = the residues of the lining atoms.
+void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavities, const std::string& kind,
+                    const molecule::Structure& structure) {
+  REQUIRE(list.is_array());
+  REQUIRE(list.size() == cavities.size());
+  std::set<int> serials;
+  for (const molecule::Atom& a : structure.atoms) serials.insert(a.serial);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& p = list[i];
+    INFO(kind << " " << i + 1);
+    CHECK(p["rank"] == i + 1);
+    for (const char* key : {"score", "sa_volume", "sa_area", "mouth_area", "buriedness", "burial_atoms", "depth",
+                            "tetrahedra"})
+      check_number(p, key);
+    for (const char* key : {"ms_volume", "ms_area"})  // null: not computed
+      if (!p.at(key).is_null()) check_number(p, key);
+    CHECK(p["mouths_to_outside"].get<std::size_t>() <= p["mouths"].get<std::size_t>());
+    for (const char* key : {"max_alpha_sq", "close_alpha_sq", "fill_alpha_sq"}) check_number(p, key, false);
+    if (i > 0) CHECK(p["score"].get<double>() <= list[i - 1]["score"].get<double>());
+    CHECK(p["tetrahedra"] == cavities[i].cells.size());
+    CHECK(p["fill_alpha_sq"].get<double>() > 0);  // empty at alpha_sq = 0
+    REQUIRE(p["mouths"].is_number_unsigned());
+    REQUIRE(p["mouth_areas"].is_array());
+    CHECK(p["mouths"] == p["mouth_areas"].size());
+    if (kind == "void") {
+      CHECK(p["mouths"] == 0);
+      CHECK(p["close_alpha_sq"].get<double>() <= 0);
+      CHECK(p["depth"] == 0);
+    } else {
+      CHECK(p["mouths"].get<std::size_t>() >= 1);
+    }
+    double mouth_sum = 0;
+    for (const json& a : p["mouth_areas"]) mouth_sum += a.get<double>();
+    CHECK(mouth_sum == Approx(p["mouth_area"].get<double>()).margin(2e-3 * double(p["mouths"].get<std::size_t>())));
+    REQUIRE(p["center"].is_array());
+    REQUIRE(p["center"].size() == 3);
+    for (const json& x : p["center"]) CHECK(x.is_number());
+    CHECK(p["mesh"] == "meshes/" + kind + "_" + std::to_string(i + 1) + ".ply");
+
+    REQUIRE(p["lining_atoms"].is_array());
+    REQUIRE(p["lining_atoms"].size() == cavities[i].lining_atoms.size());
+    CHECK(p["lining_atoms"].size() >= 4);  // at least one tetrahedron's vertices
+    std::set<std::string> residues_of_atoms;
+    for (const json& a : p["lining_atoms"]) {
+      REQUIRE(a["serial"].is_number_integer());
+      CHECK(serials.count(a["serial"].get<int>()) == 1);
+      REQUIRE(a["name"].is_string());
+      REQUIRE(a["element"].is_string());
+      residues_of_atoms.insert(a["residue"].get<std::string>());
+    }
+    std::set<std::string> residues;
+    for (const json& r : p["lining_residues"]) {
+      const std::string id = r["chain"].get<std::string>() + ":" + r["name"].get<std::string>() + ":" +
+                             std::to_string(r["number"].get<int>()) + r["insertion_code"].get<std::string>();
+      CHECK(r["id"] == id);
+      CHECK(residues.insert(id).second);  // each residue once
+    }
+    CHECK(residues == residues_of_atoms);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]") {
+  const Run& r = the_run();
+  const json& j = r.report;
+  const molecule::Cavities& cav = r.search.cavities;
+  REQUIRE(j.is_object());
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  CHECK(keys == std::vector<std::string>{"alphapocket", "input", "parameters", "molecule", "pockets", "voids",
+                                         "tunnels"});
+  CHECK(j["alphapocket"] == "test");
+
+  const json& in = j["input"];
+  CHECK(in["file"] == kStructure);
+  CHECK(in["format"] == "PDB");
+  CHECK(in["model"] == 1);
+  CHECK(in["atoms_kept"] == r.structure.atoms.size());
+  std::size_t dropped = 0;
+  for (const char* why : {"chain", "altloc", "water", "hetero", "hydrogen"}) dropped += in["atoms_dropped"][why].get<std::size_t>();
+  CHECK(in["atoms_kept"].get<std::size_t>() + dropped == in["atoms_in_model"].get<std::size_t>());
+  CHECK(in["atoms_dropped"]["hetero"] == 27);  // the ligand CNA of 1A26 is not part of the molecule
+  CHECK(in["warnings"].is_array());
+
+  const json& par = j["parameters"];
+  CHECK(par["probe"] == 1.4);
+  CHECK(par["min_volume"] == molecule::CavityOptions{}.min_volume);
+  CHECK(par["radii"] == "ProtOr");
+  CHECK(par["alpha_sq"] == 0.0);
+
+  const json& mol = j["molecule"];
+  CHECK(mol["atoms"] == r.structure.atoms.size());
+  CHECK(mol["sa_area"].get<double>() > 0);
+  CHECK(mol["sa_volume"].get<double>() > 0);
+  CHECK(mol["pockets"] == cav.pockets.size());
+  CHECK(mol["voids"] == cav.voids.size());
+  CHECK(mol["tunnels"] == cav.tunnels.size());
+  CHECK(mol["mesh"] == "meshes/molecule.ply");
+
+  REQUIRE_FALSE(cav.pockets.empty());  // 1A26 has its ligand's pocket, at least
+  check_cavities(j["pockets"], cav.pockets, "pocket", r.structure);
+  check_cavities(j["voids"], cav.voids, "void", r.structure);
+
+  REQUIRE(j["tunnels"].size() == cav.tunnels.size());
+  for (std::size_t i = 0; i < cav.tunnels.size(); ++i) {
+    const json& t = j["tunnels"][i];
+    INFO("tunnel " << i + 1);
+    CHECK(t["rank"] == i + 1);
+    // Alive at alpha_sq = 0: born at or before, dies after.
+    CHECK(t["birth_alpha_sq"].get<double>() <= 0);
+    CHECK(t["death_alpha_sq"].get<double>() > 0);
+    if (i > 0) CHECK(t["death_alpha_sq"].get<double>() <= j["tunnels"][i - 1]["death_alpha_sq"].get<double>());
+    check_number(t, "bottleneck_radius");
+    CHECK(t["lining_atoms"].size() == 3);  // the bottleneck triangle
+    CHECK(t["lining_residues"].size() >= 1);
+    CHECK(t["lining_residues"].size() <= 3);
+  }
+}
+
+TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.json", "[pocket_outputs]") {
+  const Run& r = the_run();
+  const std::vector<std::string> lines = lines_of(testing::read_text(r.file("pockets.csv")));
+  REQUIRE(lines.size() == 1 + r.search.cavities.pockets.size());
+  CHECK(lines[0] ==
+        "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
+        "lining_residues,residues");
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    INFO(lines[i]);
+    const std::vector<std::string> f = split(lines[i], ',');
+    REQUIRE(f.size() == 14);
+    const json& p = r.report["pockets"][i - 1];
+    CHECK(std::stoul(f[0]) == i);
+    CHECK(std::stod(f[1]) == p["score"].get<double>());
+    CHECK(std::stod(f[2]) == p["sa_volume"].get<double>());  // the same text
+    CHECK(f[3].empty() == p["ms_volume"].is_null());
+    CHECK(std::stoul(f[6]) == p["mouths"].get<std::size_t>());
+    CHECK(std::stod(f[9]) == p["center"][0].get<double>());
+    CHECK(std::stoul(f[12]) == p["lining_residues"].size());
+    std::string ids;
+    for (const json& res : p["lining_residues"]) {
+      if (!ids.empty()) ids += ' ';
+      ids += res["id"].get<std::string>();
+    }
+    CHECK(f[13] == ids);
+  }
+}
+
+TEST_CASE("pockets outputs: meshes are closed, oriented outward from the cavity, coloured by rank",
+          "[pocket_outputs]") {
+  const Run& r = the_run();
+  const alpha::Triangulation& t = *r.search.triangulation;
+  auto check_list = [&](const std::vector<molecule::Cavity>& list, const std::string& kind) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const molecule::Cavity& c = list[i];
+      INFO(kind << " " << i + 1);
+      const ReadMesh mesh = testing::read_back(r.file(molecule::cavity_mesh_path(kind, i + 1, "ply")), true);
+      CHECK(testing::closed_and_consistent(mesh, false));
+      // Outward from the cavity: the enclosed volume is that of its tetrahedra.
+      const double volume = cells_volume(t, c.cells);
+      CHECK(testing::signed_volume(mesh) == Approx(volume).epsilon(1e-4));
+      std::size_t mouth_triangles = 0;
+      for (const molecule::Mouth& m : c.mouths) mouth_triangles += m.triangles.size();
+      const auto [plain, tinted] = count_colors(mesh, molecule::rank_color(i + 1));
+      CHECK(tinted == mouth_triangles);
+      CHECK(plain + tinted == mesh.n_faces());
+    }
+  };
+  check_list(r.search.cavities.pockets, "pocket");
+  check_list(r.search.cavities.voids, "void");
+
+  const ReadMesh molecule_mesh = testing::read_back(r.file("meshes/molecule.ply"), true);
+  CHECK(testing::closed_and_consistent(molecule_mesh, false));
+  const alpha::AlphaComplex& ac = *r.search.complex;
+  CHECK(testing::signed_volume(molecule_mesh) == Approx(ac.volume(ac.level(0))).epsilon(1e-4));
+  CHECK(count_colors(molecule_mesh, molecule::kMoleculeColor).first == molecule_mesh.n_faces());
+}
+
+TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the centres", "[pocket_outputs]") {
+  const Run& r = the_run();
+  const std::string pml = testing::read_text(r.file("pockets.pml"));
+  CHECK(pml.find("/cmd.load(\"" + kStructure + "\", \"1a26A\")\n") != std::string::npos);
+  std::map<std::string, std::set<int>> selected;  // selection name -> atom ids
+  std::map<std::string, std::vector<double>> centers;
+  for (const std::string& line : lines_of(pml)) {
+    if (line.rfind("select ", 0) == 0) {
+      const std::string name = line.substr(7, line.find(',') - 7);
+      const std::size_t ids = line.find(" and id ");
+      if (ids == std::string::npos) continue;
+      std::string list = line.substr(ids + 8);
+      list.pop_back();  // ')'
+      for (const std::string& id : split(list, '+')) selected[name].insert(std::stoi(id));
+    } else if (line.rfind("pseudoatom ", 0) == 0) {
+      const std::string name = line.substr(11, line.find(',') - 11);
+      double x = 0, y = 0, z = 0;
+      REQUIRE(std::sscanf(line.c_str() + line.find("pos=["), "pos=[%lf, %lf, %lf]", &x, &y, &z) == 3);
+      centers[name] = {x, y, z};
+    }
+  }
+  const auto check = [&](const json& list, const std::string& kind) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string name = kind + "_" + std::to_string(i + 1);
+      INFO(name);
+      std::set<int> serials;
+      for (const json& a : list[i]["lining_atoms"]) serials.insert(a["serial"].get<int>());
+      CHECK(selected[name] == serials);
+      REQUIRE(centers.count(name + "_center") == 1);
+      for (int k = 0; k < 3; ++k)  // both print 3 decimals, rounded on their own
+        CHECK(centers[name + "_center"][k] == Approx(list[i]["center"][k].get<double>()).margin(1.1e-3));
+      CHECK(pml.find("set_color ap_" + name + ", [") != std::string::npos);
+    }
+  };
+  check(r.report["pockets"], "pocket");
+  check(r.report["voids"], "void");
+  CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size());
+}
+
+TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavity", "[pocket_outputs]") {
+  const Run& r = the_run();
+  const std::string text = testing::read_text(r.file("pockets.pdb"));
+  std::size_t centers = 0;
+  for (const std::string& line : lines_of(text)) {
+    if (line.rfind("HETATM", 0) != 0) continue;
+    CHECK(line.size() == 80);
+    CHECK(line.substr(17, 3) == "STP");
+    centers += line.substr(12, 4) == " CEN";
+  }
+  CHECK(centers == r.search.cavities.pockets.size() + r.search.cavities.voids.size());
+
+  molecule::StructureOptions keep;
+  keep.keep_hetero = true;
+  const molecule::Structure back = molecule::read_structure(r.file("pockets.pdb").string(), keep);
+  REQUIRE(back.hetero_groups.size() == centers);
+  std::map<std::string, std::size_t> next_rank{{"P", 1}, {"V", 1}};
+  for (const molecule::HeteroGroup& g : back.hetero_groups) {
+    INFO(g.chain << g.seq_num);
+    CHECK(g.residue_name == "STP");
+    REQUIRE(next_rank.count(g.chain) == 1);
+    CHECK(std::size_t(g.seq_num) == next_rank[g.chain]++);  // residue number = rank
+    const molecule::Cavity& c =
+        (g.chain == "P" ? r.search.cavities.pockets : r.search.cavities.voids)[std::size_t(g.seq_num) - 1];
+    REQUIRE(g.atoms.front().name == "CEN");
+    CHECK(g.atoms.front().position.x == Approx(c.center.x).margin(1e-3));
+    CHECK(g.atoms.front().position.z == Approx(c.center.z).margin(1e-3));
+    CHECK(g.atoms.size() >= 2);  // a cavity drains into at least one sink
+    for (std::size_t k = 1; k < g.atoms.size(); ++k) CHECK(g.atoms[k].name == "SNK");
+  }
+}
+
+TEST_CASE("pockets outputs: a unit cube of a grid as a void and as a pocket", "[pocket_outputs]") {
+  // 4x4x4 grid: every cube's 8 corners are cospherical (degenerate input).
+  const alpha::Triangulation t(testing::grid_points(4));
+  const alpha::AlphaComplex ac(t);
+  const auto cube_cells = [&](double lo) {
+    std::vector<alpha::Index> cells;
+    for (alpha::Index c = 0; c < t.num_cells(); ++c) {
+      if (t.is_infinite(c)) continue;
+      alpha::Vec3 g{};
+      for (const alpha::Index v : t.cell(c).v) g.x += t.point(v).x / 4, g.y += t.point(v).y / 4, g.z += t.point(v).z / 4;
+      if (g.x > lo && g.x < lo + 1 && g.y > lo && g.y < lo + 1 && g.z > lo && g.z < lo + 1) cells.push_back(c);
+    }
+    return cells;
+  };
+  const molecule::Rgb red{200, 10, 10};
+  TempDir dir;
+
+  SECTION("the centre cube, closed: a void") {
+    molecule::Cavity c;
+    c.cells = cube_cells(1);
+    const molecule::TriangleMesh m = molecule::cavity_mesh(ac, c, red);
+    CHECK(m.triangles.size() == 12);  // 6 squares
+    REQUIRE(m.face_colors.size() == 12);
+    molecule::write_mesh_file((dir / "void.ply").string(), m);
+    const ReadMesh back = testing::read_back(dir / "void.ply", true);
+    CHECK(testing::closed_and_consistent(back));
+    CHECK(testing::signed_volume(back) == Approx(1.0));
+    CHECK(count_colors(back, red).first == 12);
+  }
+  SECTION("the corner cube, open on the hull: a pocket with its mouth tinted") {
+    molecule::Cavity c;
+    c.cells = cube_cells(0);
+    molecule::Mouth mouth;
+    for (const alpha::Index cell : c.cells)
+      for (int k = 0; k < 4; ++k)
+        if (t.is_infinite(t.cell(cell).n[k])) mouth.triangles.push_back(ac.simplices().cell_triangle(cell, k));
+    REQUIRE(mouth.triangles.size() == 6);  // the 3 squares on the hull
+    c.mouths.push_back(mouth);
+    molecule::write_mesh_file((dir / "pocket.off").string(), molecule::cavity_mesh(ac, c, red));
+    const ReadMesh back = testing::read_back(dir / "pocket.off", true);
+    CHECK(testing::closed_and_consistent(back));
+    CHECK(testing::signed_volume(back) == Approx(1.0));
+    const auto [plain, tinted] = count_colors(back, red);
+    CHECK(plain == 6);
+    CHECK(tinted == 6);
+  }
+  SECTION("an infinite cell is refused") {
+    molecule::Cavity c;
+    for (alpha::Index cell = 0; cell < t.num_cells() && c.cells.empty(); ++cell)
+      if (t.is_infinite(cell)) c.cells.push_back(cell);
+    CHECK_THROWS_AS(molecule::cavity_mesh(ac, c, red), alpha::Error);
+  }
+}
+
+TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocket_outputs]") {
+  molecule::Structure s;
+  const auto atom = [](int serial, const char* chain, const char* res, int num, char icode) {
+    molecule::Atom a;
+    a.serial = serial;
+    a.name = "CA";
+    a.element = "C";
+    a.chain = chain;
+    a.residue_name = res;
+    a.seq_num = num;
+    a.icode = icode;
+    return a;
+  };
+  s.atoms = {atom(1, "A", "TYR", 42, '\0'), atom(2, "A", "TYR", 42, '\0'), atom(3, "A", "GLY", 42, 'B'),
+             atom(4, "x,y", "SER", -3, '\0')};
+  CHECK(molecule::residue_id(s.atoms[2]) == "A:GLY:42B");
+  CHECK(molecule::residue_id(s.atoms[3]) == "x,y:SER:-3");
+  CHECK(molecule::residues_of(s.atoms, {3, 1, 0, 2}) == std::vector<alpha::Index>{0, 2, 3});
+  CHECK_THROWS_AS(molecule::residues_of(s.atoms, {4}), alpha::Error);
+
+  molecule::PocketSearch search;
+  molecule::Cavity c;
+  c.lining_atoms = {0, 1, 2, 3};
+  c.mouths.resize(1);
+  search.cavities.pockets = {c};
+  molecule::PocketRun run;
+  run.structure = &s;
+  run.search = &search;
+  const std::vector<std::string> lines = lines_of(molecule::pockets_csv(run));
+  REQUIRE(lines.size() == 2);
+  CHECK(lines[1].substr(lines[1].rfind(",3,")) == ",3,\"A:TYR:42 A:GLY:42B x,y:SER:-3\"");
+
+  const auto report = molecule::pocket_report(run);
+  const auto& residues = report["pockets"][0]["lining_residues"];
+  REQUIRE(residues.size() == 3);
+  CHECK(residues[1]["insertion_code"] == "B");
+  CHECK(residues[0]["insertion_code"] == "");
+  CHECK(residues[2]["number"] == -3);
+  CHECK(report["pockets"][0].count("mesh") == 0);  // no mesh format: no meshes
+}
+
+TEST_CASE("pockets outputs: output directory errors leave nothing behind", "[pocket_outputs]") {
+  TempDir dir;
+  std::ofstream(dir / "file") << "x";
+  const auto one_line_naming = [](const std::string& path, const std::function<void()>& f) {
+    try {
+      f();
+      FAIL("no error");
+    } catch (const alpha::Error& e) {
+      const std::string what = e.what();
+      CHECK(what.find(path) == 0);
+      CHECK(what.find('\n') == std::string::npos);
+    }
+  };
+  // Under a regular file (works as root too, unlike a read-only directory).
+  const std::string under_file = (dir / "file/out").string();
+  one_line_naming(under_file, [&] { molecule::PocketOutputDir out(under_file); });
+  // A regular file of that name.
+  one_line_naming((dir / "file").string(), [&] { molecule::PocketOutputDir out((dir / "file").string()); });
+  // A missing parent.
+  const std::string orphan = (dir / "missing/out").string();
+  one_line_naming(orphan, [&] { molecule::PocketOutputDir out(orphan); });
+  CHECK(dir.files() == std::vector<std::string>{"file"});
+
+  // A run that fails before writing removes the directories it created,
+  // and only those.
+  { molecule::PocketOutputDir out((dir / "new").string()); }
+  CHECK_FALSE(fs::exists(dir / "new"));
+  fs::create_directory(dir / "old");
+  { molecule::PocketOutputDir out((dir / "old").string()); }
+  CHECK(fs::is_directory(dir / "old"));
+  CHECK_FALSE(fs::exists(dir / "old/meshes"));
+}
+
+TEST_CASE("pockets outputs: meshes of an earlier run are replaced, other files kept", "[pocket_outputs]") {
+  const Run& r = the_run();
+  TempDir dir;
+  fs::create_directories(dir / "out/meshes");
+  for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.obj", "notes.txt", "pocket_1.ply.bak"})
+    std::ofstream(dir / ("out/meshes/" + std::string(name))) << "old";
+  molecule::PocketOutputDir out((dir / "out").string());
+  molecule::PocketRun run = r.run;
+  run.mesh_format = "obj";
+  const std::vector<std::string> written = out.write(run, kStructure);
+  CHECK(std::count(written.begin(), written.end(), "meshes/molecule.obj") == 1);
+  CHECK_FALSE(fs::exists(dir / "out/meshes/pocket_999.ply"));
+  CHECK_FALSE(fs::exists(dir / "out/meshes/void_1.stl"));
+  CHECK(fs::exists(dir / "out/meshes/notes.txt"));
+  CHECK(fs::exists(dir / "out/meshes/pocket_1.ply.bak"));
+  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
+  CHECK(fs::exists(dir / "out/meshes/pocket_1.obj"));
+  // Every written file is there, and nothing else but the kept ones.
+  std::size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
+    files += e.is_regular_file();
+  CHECK(files == written.size() + 2);
+}

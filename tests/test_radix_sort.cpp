@@ -1,0 +1,34 @@
+// The library's internal radix sort (libalpha/src/radix_sort.hpp) against
+// std::stable_sort: same order, equal keys kept in input order.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "../libalpha/src/radix_sort.hpp"
+
+TEST_CASE("radix_sort is a stable sort by key", "[radix]") {
+  std::mt19937_64 rng(91);
+  // Below and above the size where the histograms pay off; keys with few
+  // distinct values (many ties), with high digits all equal (skipped), and
+  // spread over the whole range.
+  for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(100), std::size_t(5000), std::size_t(70000)})
+    for (const std::uint64_t mask : {std::uint64_t(7), std::uint64_t(0xFFFFFF), ~std::uint64_t(0)}) {
+      INFO("n " << n << ", mask " << mask);
+      std::vector<std::pair<std::uint64_t, std::size_t>> items(n);  // (key, input position)
+      for (std::size_t i = 0; i < n; ++i) items[i] = {rng() & mask, i};
+      auto expected = items;
+      std::stable_sort(expected.begin(), expected.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      alpha::radix_sort(items, [](const auto& item) { return item.first; });
+      CHECK(items == expected);
+      // 32-bit keys: the low half only.
+      alpha::radix_sort(items, [](const auto& item) { return std::uint32_t(item.first); });
+      std::stable_sort(expected.begin(), expected.end(),
+                       [](const auto& a, const auto& b) { return std::uint32_t(a.first) < std::uint32_t(b.first); });
+      CHECK(items == expected);
+    }
+}

@@ -1,0 +1,483 @@
+// Reading structure files (molecule/structure.hpp): the same atoms from PDB,
+// mmCIF and gzip forms of one entry; selection counts checked against an
+// independent count of the PDB records; alternate locations, hydrogens,
+// waters, hetero groups, chains and models on real files; one-line errors
+// for bad files.
+#include <catch2/catch.hpp>
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "molecule/radii.hpp"
+#include "molecule/structure.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using molecule::Atom;
+using molecule::read_structure;
+using molecule::Structure;
+using molecule::StructureOptions;
+
+std::string data(const std::string& name) { return std::string(ALPHAPOCKET_TEST_DATA) + "/" + name; }
+
+StructureOptions keep_all() {
+  StructureOptions o;
+  o.keep_hydrogens = o.keep_waters = o.keep_hetero = true;
+  return o;
+}
+
+// Everything but the serial number (PDB files count TER records in it).
+auto fields(const Atom& a) {
+  return std::tie(a.name, a.element, a.altloc, a.occupancy, a.b_factor, a.residue_name, a.seq_num, a.icode, a.chain,
+                  a.hetero, a.position, a.radius);
+}
+
+void check_same_atoms(const std::vector<Atom>& a, const std::vector<Atom>& b) {
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    INFO("atom " << i << ": " << a[i].chain << " " << a[i].residue_name << " " << a[i].seq_num << " " << a[i].name);
+    CHECK(fields(a[i]) == fields(b[i]));
+  }
+}
+
+void check_same(const Structure& a, const Structure& b) {
+  check_same_atoms(a.atoms, b.atoms);
+  REQUIRE(a.hetero_groups.size() == b.hetero_groups.size());
+  for (std::size_t i = 0; i < a.hetero_groups.size(); ++i) {
+    CHECK(a.hetero_groups[i].residue_name == b.hetero_groups[i].residue_name);
+    CHECK(a.hetero_groups[i].chain == b.hetero_groups[i].chain);
+    CHECK(a.hetero_groups[i].seq_num == b.hetero_groups[i].seq_num);
+    check_same_atoms(a.hetero_groups[i].atoms, b.hetero_groups[i].atoms);
+  }
+  const auto& ra = a.report;
+  const auto& rb = b.report;
+  CHECK(std::tie(ra.atoms_in_model, ra.kept, ra.dropped_chain, ra.dropped_altloc, ra.dropped_water, ra.dropped_hetero,
+                 ra.dropped_hydrogen, ra.hetero_groups) ==
+        std::tie(rb.atoms_in_model, rb.kept, rb.dropped_chain, rb.dropped_altloc, rb.dropped_water, rb.dropped_hetero,
+                 rb.dropped_hydrogen, rb.hetero_groups));
+}
+
+// The text of a file, gunzipped with zlib's own gz reader if need be (not
+// the code under test).
+std::string file_text(const std::string& path) {
+  gzFile f = gzopen(path.c_str(), "rb");
+  REQUIRE(f != nullptr);
+  std::string text;
+  char buf[1 << 16];
+  int n = 0;
+  while ((n = gzread(f, buf, sizeof buf)) > 0) text.append(buf, std::size_t(n));
+  gzclose(f);
+  return text;
+}
+
+// Atoms of a model, kept, and dropped for each reason.
+struct Counts {
+  std::size_t atoms = 0, kept = 0, chain = 0, altloc = 0, water = 0, hetero = 0, hydrogen = 0;
+};
+
+void check_report(const molecule::StructureReport& r, const Counts& c) {
+  CHECK(r.atoms_in_model == c.atoms);
+  CHECK(r.kept == c.kept);
+  CHECK(r.dropped_chain == c.chain);
+  CHECK(r.dropped_altloc == c.altloc);
+  CHECK(r.dropped_water == c.water);
+  CHECK(r.dropped_hetero == c.hetero);
+  CHECK(r.dropped_hydrogen == c.hydrogen);
+  // Every atom of the model counted once: kept or dropped for one reason.
+  CHECK(r.atoms_in_model ==
+        r.kept + r.dropped_chain + r.dropped_altloc + r.dropped_water + r.dropped_hetero + r.dropped_hydrogen);
+}
+
+// An independent count of what the selection keeps and drops, straight
+// from the fixed columns of the ATOM/HETATM records of one model of a PDB
+// file. `chosen` is the altloc expected to win (found by hand for the
+// file); every HETATM residue but water is taken as hetero (none of these
+// files has HETATM polymer residues).
+Counts count_pdb(const std::string& path, int model, const StructureOptions& opt, char chosen) {
+  Counts c;
+  std::istringstream in(file_text(path));
+  int current = 1;
+  bool in_model = true;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("MODEL", 0) == 0) {
+      current = std::stoi(line.substr(10));
+      in_model = current == model;
+    }
+    if (line.rfind("ENDMDL", 0) == 0) in_model = false;
+    const bool het = line.rfind("HETATM", 0) == 0;
+    if (!in_model || (!het && line.rfind("ATOM  ", 0) != 0)) continue;
+    ++c.atoms;
+    const char altloc = line[16];
+    const std::string residue = line.substr(17, 3);
+    const std::string chain = line.substr(21, 1);
+    std::string element = line.substr(76, 2);
+    element.erase(0, element.find_first_not_of(' '));
+    const bool wanted = opt.chains.empty() || std::count(opt.chains.begin(), opt.chains.end(), chain);
+    if (!wanted)
+      ++c.chain;
+    else if (altloc != ' ' && altloc != chosen)
+      ++c.altloc;
+    else if (residue == "HOH" && !opt.keep_waters)
+      ++c.water;
+    else if (residue != "HOH" && het && !opt.keep_hetero)
+      ++c.hetero;
+    else if ((element == "H" || element == "D") && !opt.keep_hydrogens)
+      ++c.hydrogen;
+    else
+      ++c.kept;
+  }
+  return c;
+}
+
+void check_counts(const std::string& file, const StructureOptions& opt, char chosen) {
+  INFO(file << " model " << opt.model << " waters " << opt.keep_waters << " hetero " << opt.keep_hetero << " hydrogens "
+            << opt.keep_hydrogens);
+  const Structure st = read_structure(file, opt);
+  const Counts c = count_pdb(file, opt.model ? opt.model : 1, opt, chosen);
+  check_report(st.report, c);
+  CHECK(st.atoms.size() == c.kept);
+}
+
+const Atom* find_atom(const std::vector<Atom>& atoms, const std::string& chain, int seq, const std::string& name) {
+  for (const Atom& a : atoms)
+    if (a.chain == chain && a.seq_num == seq && a.name == name) return &a;
+  return nullptr;
+}
+
+std::size_t count_residue(const std::vector<Atom>& atoms, const std::string& chain, int seq, const std::string& res) {
+  return std::count_if(atoms.begin(), atoms.end(),
+                       [&](const Atom& a) { return a.chain == chain && a.seq_num == seq && a.residue_name == res; });
+}
+
+// The error message of reading path (empty if it reads).
+std::string error_of(const std::string& path, const StructureOptions& opt = {}) {
+  try {
+    read_structure(path, opt);
+  } catch (const molecule::StructureError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+// A PDB ATOM/HETATM record.
+std::string pdb_atom(const char* record, int serial, const char* name, char altloc, const char* residue, char chain,
+                     int seq, double x, double y, double z, double occupancy, const char* element) {
+  char line[100];
+  std::snprintf(line, sizeof line, "%-6s%5d %-4s%c%3s %c%4d    %8.3f%8.3f%8.3f%6.2f%6.2f          %2s\n", record,
+                serial, name, altloc, residue, chain, seq, x, y, z, occupancy, 10.0, element);
+  return line;
+}
+
+}  // namespace
+
+TEST_CASE("structure: PDB and mmCIF of one entry give the same atoms", "[structure]") {
+  for (const auto& [pdb, cif] : {std::pair{"1UYD.pdb", "1UYD.cif"}, std::pair{"1fbl.pdb", "1fbl.cif.gz"}}) {
+    INFO(pdb << " vs " << cif);
+    for (const StructureOptions& opt : {StructureOptions{}, keep_all()}) {
+      const Structure a = read_structure(data(pdb), opt);
+      const Structure b = read_structure(data(cif), opt);
+      CHECK(a.report.format == "PDB");
+      CHECK(b.report.format == "mmCIF");
+      check_same(a, b);
+    }
+  }
+}
+
+TEST_CASE("structure: gzipped equals plain", "[structure]") {
+  const Structure plain = read_structure(data("1UYD.cif"), keep_all());
+  const Structure gz = read_structure(data("1UYD.cif.gz"), keep_all());
+  CHECK_FALSE(plain.report.gzipped);
+  CHECK(gz.report.gzipped);
+  check_same(plain, gz);
+  for (std::size_t i = 0; i < plain.atoms.size(); ++i) CHECK(plain.atoms[i].serial == gz.atoms[i].serial);
+}
+
+TEST_CASE("structure: format from the content, not the name", "[structure]") {
+  // An mmCIF text parsed under a .pdb name, and a PDB text under .cif.
+  const std::string cif = file_text(data("1UYD.cif"));
+  const std::string pdb = file_text(data("1UYD.pdb"));
+  const Structure a = molecule::parse_structure(cif, "entry.pdb");
+  const Structure b = molecule::parse_structure(pdb, "entry.cif");
+  CHECK(a.report.format == "mmCIF");
+  CHECK(b.report.format == "PDB");
+  check_same(a, b);
+  CHECK(a.report.models == 1);
+  CHECK(a.report.model == 1);
+}
+
+TEST_CASE("structure: selection counts equal an independent count of the PDB records", "[structure]") {
+  for (const char* file : {"1fbl.pdb", "1UYD.pdb", "1d3z_models_1_2.pdb.gz"}) {
+    StructureOptions opt;
+    check_counts(data(file), opt, 'A');
+    opt.keep_waters = true;
+    check_counts(data(file), opt, 'A');
+    opt.keep_hetero = true;
+    check_counts(data(file), opt, 'A');
+    opt.keep_hydrogens = true;
+    check_counts(data(file), opt, 'A');
+  }
+  StructureOptions second;
+  second.model = 2;
+  check_counts(data("1d3z_models_1_2.pdb.gz"), second, 'A');
+  // And the numbers, checked by hand (grep of the files' records).
+  // 1fbl: 2966 ATOM + 328 HETATM records: 295 waters, HTA (27), 4 Ca, 2 Zn.
+  check_report(read_structure(data("1fbl.pdb")).report, {.atoms = 3294, .kept = 2966, .water = 295, .hetero = 33});
+}
+
+TEST_CASE("structure: counts of mmCIF files (checked by hand)", "[structure]") {
+  // 5i55: 218 atoms; LYS 12 in two conformers of 9 atoms at 0.50 each;
+  // 12 waters; MPD (8) and ACT (4); MSE 1 (HETATM, in the polymer) kept.
+  const Structure s = read_structure(data("5i55.cif"));
+  check_report(s.report, {.atoms = 218, .kept = 185, .altloc = 9, .water = 12, .hetero = 12});
+  CHECK(count_residue(s.atoms, "A", 1, "MSE") == 8);
+  const Atom* se = find_atom(s.atoms, "A", 1, "SE");
+  REQUIRE(se);
+  CHECK(se->hetero);
+  CHECK(se->element == "Se");
+  CHECK(se->radius == 1.90);
+  // 1pfe: a DNA duplex strand (chain A) and echinomycin (chain B, a
+  // depsipeptide), a chloride, two quinoxalines, 80 waters; 24 atoms in
+  // other conformers. Echinomycin's N2C and NCY (14 kept atoms) are HETATM
+  // residues gemmi does not know as amino acids: ligand, not receptor.
+  const Structure p = read_structure(data("1pfe.cif.gz"));
+  check_report(p.report, {.atoms = 342, .kept = 199, .altloc = 24, .water = 80, .hetero = 39});
+}
+
+TEST_CASE("structure: alternate locations keep the highest occupancy, ties the first", "[structure]") {
+  SECTION("a tie: 1UYD ILE 203 CD1 at 0.50/0.50 keeps A") {
+    const Structure s = read_structure(data("1UYD.pdb"));
+    const Atom* cd1 = find_atom(s.atoms, "A", 203, "CD1");
+    REQUIRE(cd1);
+    CHECK(cd1->altloc == 'A');
+    CHECK(cd1->position == alpha::Vec3{-9.411, 20.395, 11.153});
+    CHECK(count_residue(s.atoms, "A", 203, "ILE") == 8);
+  }
+  SECTION("1pfe: B (0.53) over A (0.47); one residue of each mixed pair") {
+    StructureOptions with_hetero;
+    with_hetero.keep_hetero = true;  // N2C and NCY are hetero residues
+    const Structure s = read_structure(data("1pfe.cif.gz"), with_hetero);
+    const Atom* c4 = find_atom(s.atoms, "A", 1, "C4'");
+    REQUIRE(c4);
+    CHECK(c4->altloc == 'B');
+    CHECK(c4->position == alpha::Vec3{-10.276, 20.030, 19.329});
+    CHECK(count_residue(s.atoms, "A", 1, "DG") == 19);  // 15 + 4 of the 2x4 in conformers
+    // Microheterogeneity: N2C (A, 0.56) or NCY (B, 0.44) at 3, and the
+    // reverse at 7: the 0.56 residue stays, the other goes.
+    CHECK(count_residue(s.atoms, "B", 3, "N2C") == 7);
+    CHECK(count_residue(s.atoms, "B", 3, "NCY") == 0);
+    CHECK(count_residue(s.atoms, "B", 7, "NCY") == 7);
+    CHECK(count_residue(s.atoms, "B", 7, "N2C") == 0);
+  }
+  SECTION("per residue by mean occupancy; a name missing from the chosen conformer keeps its best") {
+    std::string pdb;
+    int serial = 0;
+    // Residue 1: A (0.3) and B (0.7) for CB; OG only in A and C (0.2, 0.1).
+    for (const char* name : {"N", "CA", "C", "O"}) {
+      ++serial;
+      pdb += pdb_atom("ATOM", serial, name, ' ', "SER", 'A', 1, serial, 0, 0, 1, "");
+    }
+    pdb += pdb_atom("ATOM", ++serial, "CB", 'A', "SER", 'A', 1, 0, 1, 0, 0.3, "C");
+    pdb += pdb_atom("ATOM", ++serial, "CB", 'B', "SER", 'A', 1, 0, 2, 0, 0.7, "C");
+    pdb += pdb_atom("ATOM", ++serial, "OG", 'A', "SER", 'A', 1, 0, 3, 0, 0.2, "O");
+    pdb += pdb_atom("ATOM", ++serial, "OG", 'C', "SER", 'A', 1, 0, 4, 0, 0.1, "O");
+    // Residue 2: three conformers, C has the highest mean (0.4 vs 0.3, 0.3).
+    for (char alt : {'A', 'B', 'C'}) {
+      const double occ = alt == 'C' ? 0.4 : 0.3;
+      pdb += pdb_atom("ATOM", ++serial, "CB", alt, "ALA", 'A', 2, 5, alt, 0, occ, "C");
+    }
+    const Structure s = molecule::parse_structure(pdb, "altlocs.pdb");
+    const Atom* cb1 = find_atom(s.atoms, "A", 1, "CB");
+    const Atom* og1 = find_atom(s.atoms, "A", 1, "OG");
+    const Atom* cb2 = find_atom(s.atoms, "A", 2, "CB");
+    REQUIRE((cb1 && og1 && cb2));
+    CHECK(cb1->altloc == 'B');  // mean 0.7 over A's (0.3 + 0.2) / 2
+    CHECK(og1->altloc == 'A');  // no OG in B: the best of A and C
+    CHECK(cb2->altloc == 'C');
+    CHECK(s.atoms.size() == 7);
+    CHECK(s.report.dropped_altloc == 4);
+  }
+}
+
+TEST_CASE("structure: hydrogens and models", "[structure]") {
+  const std::string file = data("1d3z_models_1_2.pdb.gz");  // NMR ubiquitin with hydrogens, 2 models
+  const Structure heavy = read_structure(file);
+  CHECK(heavy.report.models == 2);
+  CHECK(heavy.report.model == 1);
+  CHECK(heavy.report.dropped_hydrogen == 629);
+  CHECK(heavy.atoms.size() == 602);
+  CHECK(std::none_of(heavy.atoms.begin(), heavy.atoms.end(), [](const Atom& a) { return a.element == "H"; }));
+
+  StructureOptions with_h;
+  with_h.keep_hydrogens = true;
+  const Structure all = read_structure(file, with_h);
+  CHECK(all.atoms.size() == 1231);
+  const Atom* h = find_atom(all.atoms, "A", 1, "H1");
+  REQUIRE(h);
+  CHECK(h->element == "H");
+  CHECK(h->radius == 1.10);
+
+  StructureOptions second;
+  second.model = 2;
+  const Structure m2 = read_structure(file, second);
+  CHECK(m2.report.model == 2);
+  REQUIRE(m2.atoms.size() == heavy.atoms.size());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < m2.atoms.size(); ++i) {
+    CHECK(m2.atoms[i].name == heavy.atoms[i].name);
+    moved += !(m2.atoms[i].position == heavy.atoms[i].position);
+  }
+  CHECK(moved > m2.atoms.size() / 2);  // another conformation of the same atoms
+
+  StructureOptions first;
+  first.model = 1;
+  check_same(read_structure(file, first), heavy);
+  StructureOptions third;
+  third.model = 3;
+  CHECK(error_of(file, third) == file + ": no model 3 (models: 1, 2)");
+}
+
+TEST_CASE("structure: waters and hetero groups", "[structure]") {
+  const std::string file = data("1fbl.pdb");
+  const Structure plain = read_structure(file);
+  CHECK(std::none_of(plain.atoms.begin(), plain.atoms.end(), [](const Atom& a) { return a.hetero; }));
+  // Ligands come back in any case: 4 Ca, 2 Zn ions and the inhibitor HTA.
+  REQUIRE(plain.hetero_groups.size() == 7);
+  std::multiset<std::string> names;
+  for (const auto& g : plain.hetero_groups) {
+    names.insert(g.residue_name);
+    CHECK(g.chain == "A");
+    for (const Atom& a : g.atoms) CHECK(a.residue_name == g.residue_name);
+  }
+  CHECK(names == std::multiset<std::string>{"CA", "CA", "CA", "CA", "ZN", "ZN", "HTA"});
+  const auto hta = std::find_if(plain.hetero_groups.begin(), plain.hetero_groups.end(),
+                                [](const auto& g) { return g.residue_name == "HTA"; });
+  CHECK(hta->seq_num == 900);
+  CHECK(hta->atoms.size() == 27);
+  CHECK(plain.report.hetero_groups == 7);
+
+  StructureOptions waters;
+  waters.keep_waters = true;
+  const Structure w = read_structure(file, waters);
+  CHECK(w.atoms.size() == plain.atoms.size() + 295);
+  CHECK(std::count_if(w.atoms.begin(), w.atoms.end(), [](const Atom& a) { return a.residue_name == "HOH"; }) == 295);
+
+  StructureOptions hetero;
+  hetero.keep_hetero = true;
+  const Structure h = read_structure(file, hetero);
+  CHECK(h.atoms.size() == plain.atoms.size() + 33);
+  const Atom* zn = find_atom(h.atoms, "A", 997, "ZN");
+  REQUIRE(zn);
+  CHECK(zn->hetero);
+  CHECK(zn->element == "Zn");
+  CHECK(zn->radius == 1.39);
+  CHECK(h.hetero_groups.size() == 7);  // the same list, whether kept or not
+}
+
+TEST_CASE("structure: chains", "[structure]") {
+  const std::string file = data("1pfe.cif.gz");
+  StructureOptions a, b, ab;
+  a.chains = {"A"};
+  b.chains = {"B"};
+  ab.chains = {"A", "B"};
+  const Structure sa = read_structure(file, a);
+  const Structure sb = read_structure(file, b);
+  CHECK(sa.atoms.size() == 161);  // the DNA strand: 171 atoms, 10 in the other conformer
+  CHECK(sb.atoms.size() == 38);   // echinomycin: 66 atoms, 14 in the other residues, 14 of N2C/NCY
+  CHECK(std::all_of(sa.atoms.begin(), sa.atoms.end(), [](const Atom& x) { return x.chain == "A"; }));
+  CHECK(std::all_of(sb.atoms.begin(), sb.atoms.end(), [](const Atom& x) { return x.chain == "B"; }));
+  check_same(read_structure(file, ab), read_structure(file));
+  CHECK(sa.report.dropped_chain + sb.report.dropped_chain == sa.report.atoms_in_model);
+  // Ligands of the selected chains only.
+  for (const auto& g : sb.hetero_groups) CHECK(g.chain == "B");
+  StructureOptions z;
+  z.chains = {"Z"};
+  CHECK(error_of(file, z) == file + ": no chain 'Z' in model 1 (chains: A, B)");
+}
+
+TEST_CASE("structure: an unknown element gets the default radius and one warning", "[structure]") {
+  std::string pdb;
+  int serial = 0;
+  for (int i = 0; i < 4; ++i) pdb += pdb_atom("HETATM", ++serial, "C1", ' ', "LIG", 'A', i + 1, i, i * i, 0, 1, "C");
+  for (int i = 0; i < 3; ++i) pdb += pdb_atom("HETATM", ++serial, "Q1", ' ', "LIG", 'A', i + 1, 9, i, 1, 1, "QQ");
+  StructureOptions hetero;
+  hetero.keep_hetero = true;
+  const Structure s = molecule::parse_structure(pdb, "unknown.pdb", hetero);
+  REQUIRE(s.atoms.size() == 7);
+  const Atom* q = find_atom(s.atoms, "A", 2, "Q1");
+  REQUIRE(q);
+  CHECK(q->element == "X");
+  CHECK(q->radius == molecule::kDefaultRadius);
+  REQUIRE(s.report.warnings.size() == 1);
+  CHECK(s.report.warnings[0] == "3 atoms of unknown element 'X' (first: atom Q1 of LIG A1) given radius 1.8 A");
+}
+
+TEST_CASE("structure: bad files give one line naming the file", "[structure]") {
+  const std::string bad = data("bad");
+  const auto expect_error = [](const std::string& path, const std::string& message) {
+    INFO(path);
+    const std::string e = error_of(path);
+    CHECK(e == path + ": " + message);
+    CHECK(e.find('\n') == std::string::npos);
+  };
+  expect_error(bad + "/missing.pdb", "cannot open: no such file");
+  expect_error(bad, "is a directory, not a file");
+  expect_error(bad + "/empty.pdb", "file is empty");
+  expect_error(bad + "/not_structure.pdb", "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)");
+  expect_error(bad + "/three_atoms.pdb", "only 3 atoms after the selection, at least 4 are needed");
+  expect_error(bad + "/truncated.pdb.gz", "truncated gzip data (unexpected end of file)");
+  expect_error(bad + "/corrupt.pdb.gz", "corrupt gzip data (incorrect data check)");
+  // gemmi's messages, made one line, with the file (and line) in front.
+  CHECK(error_of(bad + "/truncated.cif") == bad + "/truncated.cif:3:1: Wrong number of values in the loop");
+  CHECK(error_of(bad + "/short_line.pdb") ==
+        bad +
+            "/short_line.pdb: Problem in line 2: The line is too short to be correct: "
+            "ATOM      1  N   ALA A   1      11.104   6.134");
+
+  // Other bad bytes, through parse_structure.
+  const auto parse_error = [](std::string_view bytes, const std::string& name) {
+    try {
+      molecule::parse_structure(bytes, name);
+    } catch (const molecule::StructureError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(parse_error(std::string("\x7f"
+                                "ELF\0\0\0\0binary",
+                                15),
+                    "x.pdb") == "x.pdb: binary data, not a PDB or mmCIF file");
+  CHECK(parse_error("ATOM  plain text", "x.pdb.gz") == "x.pdb.gz: not gzip data (no gzip header)");
+  CHECK(parse_error("  \n\n ", "x.cif") == "x.cif: file is empty");
+  CHECK(parse_error("data_x\n_cell.length_a 1\n", "x.cif") == "x.cif: no atoms in the file");
+  // Only waters: nothing left, and the message says why.
+  std::string waters;
+  for (int i = 0; i < 5; ++i) waters += pdb_atom("HETATM", i + 1, "O", ' ', "HOH", 'A', i + 1, i, 0, 0, 1, "O");
+  CHECK(parse_error(waters, "w.pdb") ==
+        "w.pdb: no atoms left after the selection (model 1 has 5 atoms; dropped: 5 water)");
+  // Errors are alpha::Error too.
+  CHECK_THROWS_AS(read_structure(bad + "/empty.pdb"), alpha::Error);
+}
+
+TEST_CASE("structure: summary line", "[structure]") {
+  CHECK(molecule::summary(read_structure(data("1UYD.pdb")).report) ==
+        "PDB, model 1: kept 1644 of 1950 atoms; dropped: 1 altloc, 277 water, 28 hetero; 1 hetero group");
+  CHECK(molecule::summary(read_structure(data("1d3z_models_1_2.pdb.gz")).report) ==
+        "PDB (gzip), model 1 of 2: kept 602 of 1231 atoms; dropped: 629 hydrogen; 0 hetero groups");
+}
+
+TEST_CASE("structure: structure file names", "[structure]") {
+  for (const char* name : {"a.pdb", "A.PDB", "x/1abc.ent", "1abc.cif", "1abc.mmCIF", "1abc.cif.gz", "1abc.pdb.GZ"})
+    CHECK(molecule::is_structure_file(name));
+  for (const char* name : {"points.xyz", "a.gz", "pdb", "a.pdb.bz2", "a.cif.gz.txt"})
+    CHECK_FALSE(molecule::is_structure_file(name));
+}
