@@ -196,6 +196,9 @@ void cycle_pairs(const Simplices& s, const std::vector<std::uint64_t>& edges,
   std::vector<Index> reduced_at;  // by pivot position: offset in `reduced`
   assign_huge(reduced_at, edges.size(), kNone);
   std::vector<Index> reduced;
+  // Reduced columns average under 3 entries: reserving (address space,
+  // not memory until written) avoids the copies of a growing vector.
+  reserve_huge(reduced, 8 * std::size_t(kills.count()));
   HeapColumn column;
   Index next = 0;  // the next killing triangle
   for (Index k = 0; k < triangles.size(); ++k) {
@@ -239,6 +242,10 @@ void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRank
 std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Simplices& s,
                                                const FiltrationRanks& r, bool keep_zero_length) {
   Pairs pairs{keep_zero_length, {}};
+  // A bound on the pairs (of dimension 0 born at distinct vertices, 1 at
+  // distinct edges, 2 dying at distinct cells), reserved as address space
+  // (memory only as written): no copies of a growing vector.
+  reserve_huge(pairs.list, t.num_points() + s.num_edges() + t.num_cells());
   find_pairs(t, s, r, pairs);
   std::sort(pairs.list.begin(), pairs.list.end(), [](const PersistencePair& a, const PersistencePair& b) {
     return std::tie(a.dim, a.birth, a.death, a.birth_simplex) < std::tie(b.dim, b.birth, b.death, b.birth_simplex);

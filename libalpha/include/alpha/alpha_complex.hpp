@@ -60,6 +60,7 @@ public:
   // rank is below this level are present at alpha_sq.
   Index level(double alpha_sq) const;
 
+  // Interval records, returned by value: they are stored by field.
   Interval vertex_interval(Index v) const {
     return {ranks_.vertex[v], vertex_bounds_[v].low, vertex_bounds_[v].high, vertex_attached_[v]};
   }
