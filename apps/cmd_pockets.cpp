@@ -88,11 +88,11 @@ std::string residue_list(const std::vector<molecule::Atom>& atoms, const molecul
 }
 
 void print_summary(const PocketsOptions& opt, const std::string& outdir, const molecule::Structure& structure,
-                   const molecule::MoleculeTotals& totals, const molecule::Cavities& cavities) {
+                   const molecule::Cavities& cavities) {
   const auto& pockets = cavities.pockets;
   std::printf("%s: %s\n", opt.input.file.c_str(), molecule::summary(structure.report).c_str());
   std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
-              totals.sa_area, totals.sa_volume);
+              cavities.sa_area, cavities.sa_volume);
   std::printf("%zu pocket%s, %zu void%s, %zu tunnel%s; written to %s/\n", pockets.size(),
               pockets.size() == 1 ? "" : "s", cavities.voids.size(), cavities.voids.size() == 1 ? "" : "s",
               cavities.tunnels.size(), cavities.tunnels.size() == 1 ? "" : "s", outdir.c_str());
@@ -152,7 +152,7 @@ int run_pockets(const PocketsOptions& opt) {
   if (opt.json) {
     std::puts(molecule::pocket_report(run).dump().c_str());
   } else {
-    print_summary(opt, outdir, structure, search.totals, cavities);
+    print_summary(opt, outdir, structure, cavities);
   }
   flush_stdout();
   return 0;

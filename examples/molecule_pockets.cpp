@@ -38,7 +38,7 @@ int run(const std::string& file, const std::string& outdir) {
   const molecule::PocketSearch search = molecule::search_pockets(structure, options);
   const molecule::Cavities& cavities = search.cavities;
   std::printf("solvent-accessible area %.0f A^2, volume %.0f A^3; %zu pockets, %zu voids, %zu tunnels\n",
-              search.totals.sa_area, search.totals.sa_volume, cavities.pockets.size(), cavities.voids.size(),
+              cavities.sa_area, cavities.sa_volume, cavities.pockets.size(), cavities.voids.size(),
               cavities.tunnels.size());
   for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.pockets.size()); ++i) {
     const molecule::Cavity& p = cavities.pockets[i];

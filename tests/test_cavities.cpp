@@ -12,6 +12,7 @@
 #include "alpha/alpha_complex.hpp"
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
+#include "alpha/union_of_balls.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/structure.hpp"
 #include "point_sets.hpp"
@@ -334,6 +335,19 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
           b.complex.triangle_interval(b.complex.simplices().cell_triangle(c, k)).entry >= level)
         with_mouth.insert(flow.region(c));
   CHECK(castp.pockets.size() == with_mouth.size());
+  // Each cavity's sinks are exactly its cells where the flow ends; the
+  // molecule totals are the union of the inflated balls.
+  for (const auto* list : {&cav.pockets, &cav.voids})
+    for (const Cavity& c : *list) {
+      std::vector<Index> sinks;
+      for (Index cell : c.cells)
+        if (flow.is_sink(cell)) sinks.push_back(cell);
+      CHECK(c.sinks == sinks);
+      CHECK(!c.sinks.empty());
+    }
+  const alpha::UnionOfBalls sa_model(b.complex);
+  CHECK(cav.sa_area == sa_model.area());
+  CHECK(cav.sa_volume == sa_model.volume());
   auto all_cells = [](const std::vector<Cavity>& list) {
     std::vector<Index> cells;
     for (const Cavity& c : list) cells.insert(cells.end(), c.cells.begin(), c.cells.end());

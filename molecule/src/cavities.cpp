@@ -112,6 +112,8 @@ public:
   Index level() const { return level_; }
 
   void run(Cavities& out) {
+    out.sa_area = space_.union_of_balls().area();
+    out.sa_volume = space_.union_of_balls().volume();
     std::vector<std::vector<Index>> regions(flow_.num_regions());
     for (Index c = 0; c < t_.num_cells(); ++c)
       if (flow_.region(c) != alpha::kNone) regions[flow_.region(c)].push_back(c);
@@ -169,6 +171,7 @@ private:
     double total_weight = 0;
     for (Index c : cells) {
       const alpha::Cell& cell = t_.cell(c);
+      if (flow_.is_sink(c)) cav.sinks.push_back(c);
       for (int k = 0; k < 4; ++k) {
         cav.lining_atoms.push_back(cell.v[k]);
         const Index f = s_.cell_triangle(c, k);

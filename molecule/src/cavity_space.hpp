@@ -34,6 +34,8 @@ public:
   // edge.
   double open_area(alpha::Index triangle) const;
 
+  const alpha::UnionOfBalls& union_of_balls() const { return union_; }
+
 private:
   const alpha::AlphaComplex& ac_;
   alpha::UnionOfBalls union_;

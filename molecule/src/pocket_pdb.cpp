@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <string_view>
 
-#include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
 #include "alpha/sizes.hpp"
 
@@ -42,7 +41,6 @@ private:
 
 std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
   const alpha::Triangulation& t = ac.triangulation();
-  const alpha::DiscreteFlow flow(ac, ac.level(0));
   const alpha::SizeKernel sizes(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
 
   std::string out;
@@ -55,8 +53,7 @@ std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, 
     for (std::size_t i = 0; i < list.size(); ++i) {
       const Cavity& cavity = list[i];
       pdb.hetatm(" CEN", chain, i + 1, cavity.center, 0);
-      for (const alpha::Index c : cavity.cells) {
-        if (!flow.is_sink(c)) continue;
+      for (const alpha::Index c : cavity.sinks) {
         const auto& v = t.cell(c).v;
         const alpha::Simplex tetra(v[0], v[1], v[2], v[3]);
         pdb.hetatm(" SNK", chain, i + 1, sizes.center(tetra), std::sqrt(std::fmax(sizes.size(tetra).value, 0.0)));

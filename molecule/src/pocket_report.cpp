@@ -169,8 +169,8 @@ json pocket_report(const PocketRun& run) {
       {"alpha_sq", 0.0},
   };
   json molecule = {{"atoms", run.structure->atoms.size()},
-                   {"sa_area", length(run.search->totals.sa_area)},
-                   {"sa_volume", length(run.search->totals.sa_volume)},
+                   {"sa_area", length(run.search->cavities.sa_area)},
+                   {"sa_volume", length(run.search->cavities.sa_volume)},
                    {"pockets", run.search->cavities.pockets.size()},
                    {"voids", run.search->cavities.voids.size()},
                    {"tunnels", run.search->cavities.tunnels.size()}};

@@ -4,7 +4,6 @@
 #include <utility>
 #include <vector>
 
-#include "alpha/union_of_balls.hpp"
 
 namespace molecule {
 namespace {
@@ -31,8 +30,6 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
 
   const auto cavities_start = std::chrono::steady_clock::now();
   out.cavities = find_cavities(*out.complex, radii, options);
-  const alpha::UnionOfBalls sa_model(*out.complex);
-  out.totals = {sa_model.area(), sa_model.volume()};
   out.cavities_seconds = seconds_since(cavities_start);
   return out;
 }

@@ -75,6 +75,9 @@ struct Cavity {
   double depth = 0;
   alpha::Vec3 center{};  // the cells' centroids weighted by their free volume
   std::vector<alpha::Index> lining_atoms;  // input point (atom) indices of the cells' vertices, sorted
+  // The cells where the discrete flow ends (their orthocentre inside them),
+  // sorted: where the largest probes sit.
+  std::vector<alpha::Index> sinks;
   // Squared radius of the largest probe the cavity can hold: the largest
   // orthosphere size among its cells (alpha_sq of the cell that fills last).
   double max_alpha_sq = 0;
@@ -113,6 +116,11 @@ struct Tunnel {
 };
 
 struct Cavities {
+  // The whole molecule's solvent-accessible model: area and volume of the
+  // union of the probe-inflated balls (the union the cavities' shares are
+  // split from), A^2 and A^3.
+  double sa_area = 0;
+  double sa_volume = 0;
   std::vector<Cavity> pockets;  // ranked: best first
   std::vector<Cavity> voids;    // ranked: best first
   std::vector<Tunnel> tunnels;  // by decreasing death_alpha_sq (widest bottleneck first)

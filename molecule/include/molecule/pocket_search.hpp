@@ -1,8 +1,7 @@
 // The whole cavity search on a structure, as `alphapocket pockets` runs it:
 // atom i becomes the weighted point (x_i, (r_i + probe)^2), r_i its ProtOr
 // radius; their regular triangulation and alpha complex give the cavities
-// (find_cavities) and the solvent-accessible model's area and volume (the
-// union of the probe-inflated balls, alpha::UnionOfBalls).
+// (find_cavities, with the solvent-accessible model's area and volume).
 #pragma once
 #include <memory>
 
@@ -13,17 +12,10 @@
 
 namespace molecule {
 
-// Area and volume of the union of the probe-inflated atom balls.
-struct MoleculeTotals {
-  double sa_area = 0;
-  double sa_volume = 0;
-};
-
 struct PocketSearch {
   std::unique_ptr<alpha::Triangulation> triangulation;
   std::unique_ptr<alpha::AlphaComplex> complex;  // refers to *triangulation
   Cavities cavities;  // atom indices are indices into Structure::atoms
-  MoleculeTotals totals;
   // Wall-clock seconds of the two stages, for logs and benchmarks.
   double complex_seconds = 0;
   double cavities_seconds = 0;
