@@ -1,14 +1,11 @@
 #include "point_file.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
+
+#include "alpha/input_file.hpp"
 
 namespace alphapocket {
 namespace {
@@ -94,35 +91,8 @@ PointSet parse_points(std::string_view text, const std::string& name, bool weigh
   return set;
 }
 
-void check_input_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) {
-    const std::string reason = ec && ec != std::errc::no_such_file_or_directory ? ec.message()
-                                                                                 : "no such file";
-    throw std::runtime_error(path + ": cannot open: " + reason);
-  }
-  if (fs::is_directory(st)) throw std::runtime_error(path + ": is a directory, not a file");
-  if (fs::is_regular_file(st) && fs::file_size(path, ec) == 0 && !ec)
-    throw std::runtime_error(path + ": file is empty");
-}
-
-std::string read_input_file(const std::string& path) {
-  check_input_file(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw std::runtime_error(path + ": read error");
-  std::string text = std::move(buf).str();
-  // Pipes and other special files are only known to be empty once read.
-  if (text.empty()) throw std::runtime_error(path + ": file is empty");
-  return text;
-}
-
 PointSet read_point_file(const std::string& path, bool weighted) {
-  return parse_points(read_input_file(path), path, weighted);
+  return parse_points(alpha::read_input_file(path), path, weighted);
 }
 
 }  // namespace alphapocket

@@ -29,10 +29,4 @@ PointSet read_point_file(const std::string& path, bool weighted);
 // Parses the text of a point file; `name` is used in error messages.
 PointSet parse_points(std::string_view text, const std::string& name, bool weighted);
 
-// Reads a whole regular, non-empty file; throws naming the file when it is
-// missing, unreadable, a directory or empty.
-std::string read_input_file(const std::string& path);
-// The same checks without reading (for readers that open the file themselves).
-void check_input_file(const std::string& path);
-
 }  // namespace alphapocket

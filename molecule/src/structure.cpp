@@ -2,15 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <span>
 #include <sstream>
-#include <system_error>
 
 #include <gemmi/cif.hpp>
 #include <gemmi/mmcif.hpp>
@@ -18,32 +13,17 @@
 #include <gemmi/polyheur.hpp>
 #include <gemmi/resinfo.hpp>
 
+#include "alpha/input_file.hpp"
 #include "gunzip.hpp"
 #include "molecule/radii.hpp"
 
 namespace molecule {
 namespace {
 
-namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& name, const std::string& what) { throw StructureError(name + ": " + what); }
 
 // ---------------------------------------------------------------- input
-
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st))
-    fail(path, "cannot open: " +
-                   (ec && ec != std::errc::no_such_file_or_directory ? ec.message() : std::string("no such file")));
-  if (fs::is_directory(st)) fail(path, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) fail(path, "read error");
-  return std::move(buf).str();
-}
 
 bool ends_with_ci(std::string_view s, std::string_view suffix) {
   return s.size() >= suffix.size() && std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
@@ -391,7 +371,13 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
 }
 
 Structure read_structure(const std::string& path, const StructureOptions& options) {
-  return parse_structure(read_file(path), path, options);
+  std::string text;
+  try {
+    text = alpha::read_input_file(path);
+  } catch (const alpha::Error& e) {
+    throw StructureError(e.what());
+  }
+  return parse_structure(text, path, options);
 }
 
 bool is_structure_file(std::string_view path) {
