@@ -84,7 +84,11 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   if (std::size_t(ids_.cells) + t.num_cells() >= kNever) fail("too many simplices for 32-bit ids");
   rank_critical();
   bound_faces();
-  pairs_ = persistence_pairs(t, s, ranks_);
+}
+
+const std::vector<PersistencePair>& AlphaComplex::persistence() const {
+  std::call_once(pairs_->once, [this] { pairs_->pairs = persistence_pairs(*t_, simplices_, ranks_); });
+  return pairs_->pairs;
 }
 
 void AlphaComplex::rank_critical() {
@@ -273,14 +277,14 @@ ClassCounts AlphaComplex::counts(Index level) const {
 FiltrationRanks AlphaComplex::filtration() const { return ranks_; }
 
 std::array<std::size_t, 3> AlphaComplex::betti(Index level) const {
-  return level == 0 ? std::array<std::size_t, 3>{0, 0, 0} : betti_at(pairs_, level - 1);
+  return level == 0 ? std::array<std::size_t, 3>{0, 0, 0} : betti_at(persistence(), level - 1);
 }
 
 Index AlphaComplex::optimal_level() const {
   Index last = 0;
   for (Index v = 0; v < t_->num_points(); ++v)
     if (t_->status(v) == PointStatus::vertex) last = std::max(last, ranks_.vertex[v]);
-  for (const PersistencePair& p : pairs_)
+  for (const PersistencePair& p : persistence())
     if (p.dim == 0 && p.death != kNever) last = std::max(last, p.death);
   return last + 1;
 }
@@ -330,7 +334,7 @@ std::size_t AlphaComplex::memory_bytes() const {
   auto bits = [](const std::vector<bool>& v) { return v.capacity() / 8; };
   return simplices_.memory_bytes() + bytes(ranks_.vertex) + bytes(ranks_.edge) + bytes(ranks_.triangle) +
          bytes(ranks_.cell) + bytes(vertex_bounds_) + bytes(edge_bounds_) + bits(vertex_attached_) +
-         bits(edge_attached_) + bits(triangle_attached_) + bytes(spectrum_) + bytes(pairs_);
+         bits(edge_attached_) + bits(triangle_attached_) + bytes(spectrum_) + bytes(pairs_->pairs);
 }
 
 }  // namespace alpha

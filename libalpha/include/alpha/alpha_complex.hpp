@@ -12,6 +12,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "alpha/persistence.hpp"
@@ -77,9 +79,11 @@ public:
   ClassCounts counts(Index level) const;
 
   // Filtration by entry rank, and its persistence pairs (ranks) of
-  // positive length.
+  // positive length. The pairs are computed on the first call (thread-safe),
+  // so users of the intervals alone (areas, shapes) do not pay for them;
+  // betti() and optimal_level() need them too.
   FiltrationRanks filtration() const;
-  const std::vector<PersistencePair>& persistence() const { return pairs_; }
+  const std::vector<PersistencePair>& persistence() const;
   std::array<std::size_t, 3> betti(Index level) const;
   // Smallest level at which every vertex is present in one component.
   Index optimal_level() const;
@@ -109,7 +113,11 @@ private:
     Index edges = 0, triangles = 0, cells = 0;
   } ids_;
   std::vector<Index> spectrum_;  // global id of a simplex realizing each critical value
-  std::vector<PersistencePair> pairs_;
+  struct LazyPairs {
+    std::once_flag once;
+    std::vector<PersistencePair> pairs;
+  };
+  std::unique_ptr<LazyPairs> pairs_ = std::make_unique<LazyPairs>();  // a pointer: keeps the class movable
   SizeStats size_stats_;
 
   SizeKernel size_kernel() const;
