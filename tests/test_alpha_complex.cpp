@@ -151,3 +151,41 @@ TEST_CASE("Dense ball sample: volume near the hull's at large alpha", "[alpha]")
   }
   CHECK(signed_volume == Approx(a.volume(a.level(1.0))).epsilon(1e-9));
 }
+
+TEST_CASE("Translated copies: long runs of near-equal sizes ranked exactly", "[alpha][degenerate]") {
+  // Ten copies of a weighted cluster shifted by non-dyadic steps: the
+  // copies' sizes agree to rounding, so the spectrum sort meets long runs
+  // of overlapping values, equal or one ulp apart.
+  const auto base = testing::random_points(30, 71, 3.0);
+  const auto base_w = testing::random_weights(30, 72, 0.5, 2.0);
+  std::vector<Vec3> pts;
+  std::vector<double> w;
+  for (int k = 0; k < 10; ++k)
+    for (std::size_t i = 0; i < base.size(); ++i)
+      pts.push_back({base[i].x + 3.1 * k, base[i].y + 0.7 * k, base[i].z}), w.push_back(base_w[i]);
+  const Triangulation t(pts, w);
+  const AlphaComplex a(t);
+  SizeKernel exact(t.points().data(), t.weights().data());
+  // (rank, simplex) of every simplex entering at its own size.
+  std::vector<std::pair<Index, Simplex>> entries;
+  const Simplices& s = a.simplices();
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (!t.is_infinite(c)) entries.emplace_back(a.cell_entry(c), Simplex(t.cell(c).v[0], t.cell(c).v[1], t.cell(c).v[2], t.cell(c).v[3]));
+  for (Index f = 0; f < s.num_triangles(); ++f)
+    if (!a.triangle_interval(f).attached)
+      entries.emplace_back(a.triangle_interval(f).entry, Simplex(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]));
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (!a.edge_interval(e).attached) entries.emplace_back(a.edge_interval(e).entry, Simplex(s.edge(e)[0], s.edge(e)[1]));
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::size_t wrong = 0, ties = 0;
+  for (std::size_t k = 1; k < entries.size(); ++k) {
+    const int c = sgn(exact.exact_size(entries[k - 1].second) - exact.exact_size(entries[k].second));
+    const bool same_rank = entries[k - 1].first == entries[k].first;
+    wrong += same_rank ? c != 0 : c >= 0;
+    ties += same_rank;
+  }
+  CHECK(wrong == 0);
+  CHECK(ties > 0);
+  for (std::size_t k = 0; k < entries.size(); k += 97)
+    CHECK(a.spectrum_value(entries[k].first) == exact.rounded_size(entries[k].second));
+}

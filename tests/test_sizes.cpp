@@ -113,12 +113,17 @@ void check_size(SizeKernel& k, const Input& in, const Simplex& s, const mpq_clas
   (void)in;
 }
 
-// All pairs: compare() against the exact order, sizes against alpha values.
+// All pairs: compare() and compare_exact() against the exact order, sizes
+// against alpha values.
 void check_all_pairs(SizeKernel& k, const std::vector<Simplex>& s, const std::vector<mpq_class>& exact) {
   std::size_t wrong = 0;
+  std::vector<ExactSize> fractions;
+  for (const Simplex& x : s) fractions.push_back(k.exact_fraction(x));
   for (std::size_t i = 0; i < s.size(); ++i) {
-    for (std::size_t j = 0; j < s.size(); ++j)
+    for (std::size_t j = 0; j < s.size(); ++j) {
       if (k.compare(s[i], s[j]) != sign(exact[i] - exact[j])) ++wrong;
+      if (compare_exact(fractions[i], fractions[j]) != sign(exact[i] - exact[j])) ++wrong;
+    }
     for (std::size_t j = i; j < std::min(s.size(), i + 5); ++j) {
       const double alpha = exact[j].get_d();  // exact size when that is a double
       if (k.compare(s[i], alpha) != sign(exact[i] - mpq_class(alpha))) ++wrong;

@@ -142,7 +142,15 @@ void AlphaComplex::rank_critical() {
                 std::count(edge_attached_.begin(), edge_attached_.end(), false) +
                 std::count(triangle_attached_.begin(), triangle_attached_.end(), false));
   auto add = [&](Index g) {
-    const Size z = sizes.size(local(simplex(g)));
+    Size z = sizes.size(local(simplex(g)));
+    // Where the filter fails (nearly flat simplices) its value says nothing
+    // about the place in the order: take the exact size's nearest double,
+    // within half an ulp (an unbounded error if it overflows).
+    if (!std::isfinite(z.error) || !std::isfinite(z.value)) {
+      const double v = sizes.rounded_size(local(simplex(g)));
+      const double gap = std::nextafter(std::fabs(v), HUGE_VAL) - std::fabs(v);
+      z = {v, std::isfinite(gap) ? gap : HUGE_VAL};
+    }
     float error = float(z.error);
     if (double(error) < z.error) error = std::nextafter(error, HUGE_VALF);
     order.push_back({z.value + 0.0, error, g});  // + 0.0: -0 sorts as 0
@@ -179,12 +187,52 @@ void AlphaComplex::rank_critical() {
     else if (g < ids_.cells) ranks_.triangle[g - ids_.triangles] = rank;
     else ranks_.cell[g - ids_.cells] = rank;
   };
+  // A long run (equal values of symmetric copies, lattices) is sorted on
+  // each member's exact size computed once: k exact evaluations instead of
+  // O(k log k) exact comparisons. Same order: a stable sort by exact value.
+  constexpr std::size_t kLongRun = 3;
+  StageCounts run_compares;
+  std::vector<ExactSize> exact;
+  std::vector<std::size_t> by_value;
+  std::vector<Critical> run;
+  auto sort_long_run = [&](std::size_t b, std::size_t e) {
+    exact.clear();
+    for (std::size_t k = b; k < e; ++k) exact.push_back(sizes.exact_fraction(local(simplex(order[k].id))));
+    by_value.resize(e - b);
+    std::iota(by_value.begin(), by_value.end(), std::size_t(0));
+    auto compare = [&](std::size_t x, std::size_t y) {
+      const int c = compare_exact(exact[x], exact[y]);
+      ++(c != 0 ? run_compares.exact : run_compares.perturbed);
+      return c;
+    };
+    // One value throughout (a grid's runs): already in order, one rank.
+    std::size_t distinct = 1;
+    while (distinct < by_value.size() && compare(0, distinct) == 0) ++distinct;
+    if (distinct == by_value.size()) {
+      spectrum_.push_back(order[b].id);
+      for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
+      return;
+    }
+    std::stable_sort(by_value.begin(), by_value.end(), [&](std::size_t x, std::size_t y) { return compare(x, y) < 0; });
+    run.assign(order.begin() + std::ptrdiff_t(b), order.begin() + std::ptrdiff_t(e));
+    for (std::size_t k = b; k < e; ++k) {
+      order[k] = run[by_value[k - b]];
+      if (k == b || compare(by_value[k - b - 1], by_value[k - b]) != 0) spectrum_.push_back(order[k].id);
+      set_rank(order[k].id, Index(spectrum_.size() - 1));
+    }
+  };
   reserve_huge(spectrum_, order.size());
   for (std::size_t b = 0; b < order.size();) {
     std::size_t e = b + 1;
     double reach = order[b].value + order[b].error;
-    while (e < order.size() && order[e].value - order[e].error <= reach)
+    // !(lo > reach): an unbounded error (inf - inf) overlaps everything.
+    while (e < order.size() && !(order[e].value - order[e].error > reach))
       reach = std::max(reach, order[e].value + double(order[e].error)), ++e;
+    if (e - b >= kLongRun) {
+      sort_long_run(b, e);
+      b = e;
+      continue;
+    }
     if (e - b > 1) std::stable_sort(order.begin() + b, order.begin() + e, less);
     for (std::size_t k = b; k < e; ++k) {
       if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(order[k].id);
@@ -197,6 +245,7 @@ void AlphaComplex::rank_critical() {
 
   size_stats_ = sizes.stats();
   size_stats_.compare.filtered += filtered_compares;
+  size_stats_.compare += run_compares;
 }
 
 void AlphaComplex::bound_faces() {

@@ -397,21 +397,35 @@ Vec3 SizeKernel::center(const Simplex& simplex) const {
   return {p0.x + x[0] / den, p0.y + x[1] / den, p0.z + x[2] / den};
 }
 
-mpq_class SizeKernel::exact_size(const Simplex& simplex) const {
+ExactSize SizeKernel::exact_fraction(const Simplex& simplex) const {
   const Simplex s = sorted(simplex);
   Scaled in;
   for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
   in.finish();
-  mpz_class N, D;
-  in.size(0, s.n - 1, N, D);
-  mpq_class q(N, D);
+  ExactSize out;
+  in.size(0, s.n - 1, out.num, out.den);
+  out.unit = in.unit;  // sizes are squared lengths: of 4^unit
+  return out;
+}
+
+mpq_class SizeKernel::exact_size(const Simplex& simplex) const {
+  const ExactSize f = exact_fraction(simplex);
+  mpq_class q(f.num, f.den);
   q.canonicalize();
-  // Sizes are squared lengths: scale by 2^(2 unit).
-  if (in.unit >= 0)
-    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(2 * in.unit));
+  if (f.unit >= 0)
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(2 * f.unit));
   else
-    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-2 * in.unit));
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-2 * f.unit));
   return q;
+}
+
+int compare_exact(const ExactSize& a, const ExactSize& b) {
+  // a - b has the sign of (na db 4^ua - nb da 4^ub) * sign(da db).
+  mpz_class left = a.num * b.den, right = b.num * a.den;
+  const int shift = 2 * (a.unit - b.unit);
+  if (shift > 0) mpz_mul_2exp(left.get_mpz_t(), left.get_mpz_t(), mp_bitcnt_t(shift));
+  if (shift < 0) mpz_mul_2exp(right.get_mpz_t(), right.get_mpz_t(), mp_bitcnt_t(-shift));
+  return cmp(left, right) * sgn(a.den) * sgn(b.den);
 }
 
 double SizeKernel::rounded_size(const Simplex& s) const {
