@@ -207,12 +207,20 @@ private:
     const Index p = pair_of_cell_[last];
     cav.close_alpha_sq = p == alpha::kNone ? cav.fill_alpha_sq : ac_.spectrum_value(ac_.persistence()[p].birth);
 
+    // The largest distance from a cell to its nearest mouth. A cell stops
+    // being searched as soon as some mouth is within the depth so far (it
+    // cannot raise the maximum); the last nearest mouth is tried first, as
+    // cells in id order are near each other.
+    std::size_t hint = 0;
     for (std::size_t k = 0; k < cells.size() && !region_mouths.empty(); ++k) {
-      double nearest = std::numeric_limits<double>::infinity();
-      for (Index f : region_mouths) {
-        const auto& fv = s_.triangle(f);
-        nearest = std::min(nearest, point_triangle_distance(space[k].centroid, t_.point(fv[0]), t_.point(fv[1]),
-                                                            t_.point(fv[2])));
+      const auto distance = [&](std::size_t m) {
+        const auto& fv = s_.triangle(region_mouths[m]);
+        return point_triangle_distance(space[k].centroid, t_.point(fv[0]), t_.point(fv[1]), t_.point(fv[2]));
+      };
+      double nearest = distance(hint);
+      for (std::size_t m = 0; m < region_mouths.size() && nearest > cav.depth; ++m) {
+        const double d = distance(m);
+        if (d < nearest) nearest = d, hint = m;
       }
       cav.depth = std::max(cav.depth, nearest);
     }
