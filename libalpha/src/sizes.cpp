@@ -431,7 +431,26 @@ int compare_exact(const ExactSize& a, const ExactSize& b) {
 double SizeKernel::rounded_size(const Simplex& s) const {
   const Size f = size(s);
   if (f.error == 0) return f.value;
-  return nearest_double(exact_size(s));
+  // From the unreduced fraction by one integer division (no gcd): the
+  // quotient's 54-56 leading bits and a sticky remainder round correctly.
+  const ExactSize x = exact_fraction(s);
+  const int sign = sgn(x.num) * sgn(x.den);
+  if (sign == 0) return 0.0;
+  mpz_class a = abs(x.num), b = abs(x.den), q, r;
+  const long k = 55 - (long(mpz_sizeinbase(a.get_mpz_t(), 2)) - long(mpz_sizeinbase(b.get_mpz_t(), 2)));
+  if (k > 0) mpz_mul_2exp(a.get_mpz_t(), a.get_mpz_t(), mp_bitcnt_t(k));
+  if (k < 0) mpz_mul_2exp(b.get_mpz_t(), b.get_mpz_t(), mp_bitcnt_t(-k));
+  mpz_tdiv_qr(q.get_mpz_t(), r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  // a / b = (q + r / b) 2^-k with 2^54 <= q < 2^56.
+  const std::uint64_t bits = mpz_get_ui(q.get_mpz_t());
+  const int extra = std::bit_width(bits) - 53;
+  std::uint64_t m = bits >> extra;
+  const std::uint64_t rest = bits & ((std::uint64_t(1) << extra) - 1), half = std::uint64_t(1) << (extra - 1);
+  if (rest > half || (rest == half && (r != 0 || (m & 1)))) ++m;
+  const long exponent = 2L * x.unit - k + extra;
+  // Below the normal range ldexp would round a second time.
+  if (exponent + 53 < -1021) return nearest_double(exact_size(s));
+  return sign * std::ldexp(double(m), int(std::clamp(exponent, -2000L, 2000L)));
 }
 
 int SizeKernel::compare(const Simplex& a, const Simplex& b) { return compare(a, size(a), b, size(b)); }
