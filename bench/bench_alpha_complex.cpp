@@ -165,6 +165,8 @@ int main(int argc, char** argv) {
       // Unit density, weights (squared radii) in [0,1): about 8% hidden.
       {"weighted 1e5", testing::random_points(small, 3, std::cbrt(double(small))),
        testing::random_weights(small, 4, 0.0, 1.0), 3, true},
+      // Degenerate: every cube's corners cospherical, sizes tied in long runs.
+      {"grid 47^3", testing::grid_points(47), {}, 3, true},
   };
 
   std::printf("%-12s %7s %4s %7s %7s %7s %8s %8s %7s %7s %9s %10s %10s %11s %9s %9s %8s %8s\n", "set", "n", "reps",

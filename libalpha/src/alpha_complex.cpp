@@ -195,24 +195,27 @@ void AlphaComplex::rank_critical() {
   std::vector<ExactSize> exact;
   std::vector<std::size_t> by_value;
   std::vector<Critical> run;
+  auto exact_size = [&](std::size_t k) { return sizes.exact_fraction(local(simplex(order[k].id))); };
+  auto count = [&](int c) {
+    ++(c != 0 ? run_compares.exact : run_compares.perturbed);
+    return c;
+  };
   auto sort_long_run = [&](std::size_t b, std::size_t e) {
-    exact.clear();
-    for (std::size_t k = b; k < e; ++k) exact.push_back(sizes.exact_fraction(local(simplex(order[k].id))));
-    by_value.resize(e - b);
-    std::iota(by_value.begin(), by_value.end(), std::size_t(0));
-    auto compare = [&](std::size_t x, std::size_t y) {
-      const int c = compare_exact(exact[x], exact[y]);
-      ++(c != 0 ? run_compares.exact : run_compares.perturbed);
-      return c;
-    };
-    // One value throughout (a grid's runs): already in order, one rank.
-    std::size_t distinct = 1;
-    while (distinct < by_value.size() && compare(0, distinct) == 0) ++distinct;
-    if (distinct == by_value.size()) {
+    // One value throughout (a grid's runs): already in order, one rank,
+    // and no fraction kept.
+    const ExactSize first = exact_size(b);
+    std::size_t same = b + 1;
+    while (same < e && count(compare_exact(first, exact_size(same))) == 0) ++same;
+    if (same == e) {
       spectrum_.push_back(order[b].id);
       for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
       return;
     }
+    exact.clear();
+    for (std::size_t k = b; k < e; ++k) exact.push_back(exact_size(k));
+    by_value.resize(e - b);
+    std::iota(by_value.begin(), by_value.end(), std::size_t(0));
+    auto compare = [&](std::size_t x, std::size_t y) { return count(compare_exact(exact[x], exact[y])); };
     std::stable_sort(by_value.begin(), by_value.end(), [&](std::size_t x, std::size_t y) { return compare(x, y) < 0; });
     run.assign(order.begin() + std::ptrdiff_t(b), order.begin() + std::ptrdiff_t(e));
     for (std::size_t k = b; k < e; ++k) {
