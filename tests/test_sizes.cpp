@@ -229,15 +229,22 @@ TEST_CASE("filtered comparisons agree with exact rationals on random simplices",
 }
 
 TEST_CASE("ties on an integer grid compare exactly equal", "[sizes]") {
-  Input in;
-  in.pts = testing::grid_points(4);
-  SizeKernel k = in.kernel();
-  std::vector<Simplex> s;
-  std::vector<mpq_class> exact;
-  random_simplices(in, 300, 31, s, exact);
-  for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
-  check_all_pairs(k, s, exact);
-  CHECK(k.stats().compare.perturbed > 1000);  // exact ties, each returned as 0
+  // Unweighted, and with weights 1 and 2 (negative sizes): small integers,
+  // the 128-bit path.
+  for (const bool weighted : {false, true}) {
+    INFO("weighted " << weighted);
+    Input in;
+    in.pts = testing::grid_points(4);
+    if (weighted)
+      for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back(1.0 + double(i % 2));
+    SizeKernel k = in.kernel();
+    std::vector<Simplex> s;
+    std::vector<mpq_class> exact;
+    random_simplices(in, 300, 31, s, exact);
+    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
+    check_all_pairs(k, s, exact);
+    CHECK(k.stats().compare.perturbed > 1000);  // exact ties, each returned as 0
+  }
 }
 
 TEST_CASE("congruent triangles and cospherical tetrahedra share their size", "[sizes]") {

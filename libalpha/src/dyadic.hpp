@@ -9,6 +9,7 @@
 namespace alpha {
 
 __extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
 
 struct Dyadic {
   std::int64_t m = 0;  // odd, or 0 for the value 0

@@ -259,6 +259,15 @@ struct Scaled {
   }
 };
 
+mpz_class to_mpz(i128 v) {
+  const bool negative = v < 0;
+  const u128 m = negative ? -static_cast<u128>(v) : static_cast<u128>(v);
+  mpz_class r(static_cast<unsigned long>(m >> 64));
+  r <<= 64;
+  r += static_cast<unsigned long>(m & ~std::uint64_t(0));
+  return negative ? mpz_class(-r) : r;
+}
+
 // Sign of f(T) evaluated in 128-bit integers, or in GMP if that overflowed.
 template <class F> int exact_sign(F f) {
   const Wide w = f(Wide{});
@@ -403,8 +412,15 @@ ExactSize SizeKernel::exact_fraction(const Simplex& simplex) const {
   for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
   in.finish();
   ExactSize out;
-  in.size(0, s.n - 1, out.num, out.den);
   out.unit = in.unit;  // sizes are squared lengths: of 4^unit
+  // Small dyadic input (grids) fits 128 bits: no GMP arithmetic.
+  Wide num, den;
+  in.size(0, s.n - 1, num, den);
+  if (num.ok && den.ok) {
+    out.num = to_mpz(num.v), out.den = to_mpz(den.v);
+    return out;
+  }
+  in.size(0, s.n - 1, out.num, out.den);
   return out;
 }
 
