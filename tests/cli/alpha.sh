@@ -15,10 +15,6 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
 grid=$data/cube_grid.xyz
 
-expect_success() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
-}
-
 # The values of KEY in stdout, one per "at" entry, space-separated.
 json_values() {
   grep -o "\"$1\":\(\[[^]]*\]\|[^,}]*\)" "$tmp/out" | cut -d: -f2 | tr '\n' ' ' | sed 's/ $//'

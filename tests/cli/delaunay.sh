@@ -33,7 +33,7 @@ case $case_name in
     ;;
   cube_grid_summary)
     run delaunay "$data/cube_grid.xyz" --check
-    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    expect_success
     grep -q '64 points, 64 vertices' "$tmp/out" || fail "no point count in the summary"
     grep -q '162 tetrahedra' "$tmp/out" || fail "no tetrahedron count in the summary"
     grep -q 'valid: yes' "$tmp/out" || fail "no validity in the summary"
@@ -151,7 +151,7 @@ case $case_name in
     ;;
   version)
     run --version
-    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    expect_success
     grep -q '^alphapocket [0-9]' "$tmp/out" || fail "no version on stdout"
     ;;
   *)

@@ -43,10 +43,14 @@ expect_json() {  # KEY VALUE
   [[ "$got" == "$2" ]] || fail "\"$1\" is '$got', expected '$2'"
 }
 
+expect_success() {
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+}
+
 # A successful --json run: exit 0 and exactly one line on stdout holding
 # one JSON object.
 expect_json_object() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+  expect_success
   [[ $(wc -l <"$tmp/out") -eq 1 ]] || fail "stdout is not exactly one line"
   grep -qx '{.*}' "$tmp/out" || fail "stdout is not one JSON object"
 }

@@ -9,10 +9,6 @@ set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
 
-expect_success() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
-}
-
 # Files below directory DIR (hidden ones too), relative, sorted, one line.
 tree_of() {
   (cd "$1" && find . -mindepth 1 | sed 's|^\./||' | LC_ALL=C sort | tr '\n' ' ' | sed 's/ $//')

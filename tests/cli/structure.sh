@@ -14,10 +14,6 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
 bad=$data/bad
 
-expect_success() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
-}
-
 expect_points() {  # N: a successful delaunay --json run on N points
   expect_json_object
   expect_json points "$1"
@@ -97,12 +93,12 @@ case $case_name in
     run -q persistence "$data/1UYD.pdb"
     cp "$tmp/out" "$tmp/plain"
     run -q persistence "$data/1UYD.pdb" --weighted
-    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    expect_success
     cmp -s "$tmp/out" "$tmp/plain" || fail "--weighted changed the result of a structure file"
     ;;
   help)
     run delaunay --help
-    [[ $rc -eq 0 ]] || fail "exit code $rc"
+    expect_success
     for option in --probe --model --chains --keep-hydrogens --keep-waters --keep-hetero; do
       grep -q -- "$option" "$tmp/out" || fail "$option not in --help"
     done

@@ -10,10 +10,6 @@ set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
 
-expect_success() {
-  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
-}
-
 # NUMBER rounded to DIGITS decimals, with awk (in every Debian base system).
 rounded() {  # NUMBER DIGITS
   awk -v x="$1" -v d="$2" 'BEGIN { printf "%.*f", d, x }'
