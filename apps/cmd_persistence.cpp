@@ -13,6 +13,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -30,9 +31,12 @@ std::string value_text(double v) { return fmt::format("{}", printable(v)); }
 int run_persistence(const InputOptions& opt) {
   const AlphaInput in = load_alpha_complex(opt);
   const alpha::AlphaComplex& ac = *in.complex;
+  Stopwatch pairs_time;
+  const std::vector<alpha::PersistencePair>& pairs = ac.persistence();
+  spdlog::info("persistence pairs: {:.3f} s", pairs_time.seconds());
   std::size_t lines = 0;
   std::string out;
-  for (const alpha::PersistencePair& p : ac.persistence()) {
+  for (const alpha::PersistencePair& p : pairs) {
     if (p.birth == p.death) continue;  // zero length (the complex keeps none; be sure)
     out += fmt::format("{} {} {}\n", p.dim, value_text(ac.spectrum_value(p.birth)),
                        p.death == alpha::kNever ? std::string("inf") : value_text(ac.spectrum_value(p.death)));

@@ -136,8 +136,8 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
                in.triangulation->num_vertices(), in.triangulation->num_finite_cells());
   Stopwatch complex_time;
   in.complex = naming_file(opt.file, [&] { return std::make_unique<alpha::AlphaComplex>(*in.triangulation); });
-  spdlog::info("alpha complex: {:.3f} s, {} critical values, {} persistence pairs", complex_time.seconds(),
-               in.complex->spectrum_size(), in.complex->persistence().size());
+  // Not the persistence pairs: they are computed when a command needs them.
+  spdlog::info("alpha complex: {:.3f} s, {} critical values", complex_time.seconds(), in.complex->spectrum_size());
   return in;
 }
 
