@@ -52,7 +52,7 @@ Balls read_balls(const InputOptions& opt) {
   }
   Stopwatch read_time;
   molecule::Structure structure = read_structure_file(opt.file, opt.structure);
-  b.set = atom_balls(structure.atoms, opt.probe);
+  b.set = atom_point_set(structure.atoms, opt.probe);
   spdlog::info("read {} atoms in {:.3f} s: ball radius = {} radius + probe {} A", structure.atoms.size(),
                read_time.seconds(), molecule::kRadiusTable, opt.probe);
   b.atoms = std::move(structure.atoms);

@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "alpha/error.hpp"
+#include "molecule/atom_balls.hpp"
 #include "molecule/radii.hpp"
 
 namespace alphapocket {
@@ -86,15 +87,9 @@ molecule::Structure read_structure_file(const std::string& file, const molecule:
   return structure;
 }
 
-PointSet atom_balls(const std::vector<molecule::Atom>& atoms, double probe) {
-  PointSet set;
-  set.points.reserve(atoms.size());
-  set.weights.reserve(atoms.size());
-  for (const molecule::Atom& a : atoms) {
-    set.points.push_back(a.position);
-    set.weights.push_back((a.radius + probe) * (a.radius + probe));
-  }
-  return set;
+PointSet atom_point_set(const std::vector<molecule::Atom>& atoms, double probe) {
+  molecule::AtomBalls balls = molecule::atom_balls(atoms, probe);
+  return {std::move(balls.points), std::move(balls.weights)};
 }
 
 PointSet read_input(const InputOptions& opt) {
@@ -113,7 +108,7 @@ PointSet read_input(const InputOptions& opt) {
     return set;
   }
   const molecule::Structure structure = read_structure_file(opt.file, opt.structure);
-  PointSet set = atom_balls(structure.atoms, opt.probe);
+  PointSet set = atom_point_set(structure.atoms, opt.probe);
   spdlog::info("read {} atoms from {} in {:.3f} s: weighted points, radius = {} radius + probe {} A", set.points.size(),
                opt.file, read_time.seconds(), molecule::kRadiusTable, opt.probe);
   return set;

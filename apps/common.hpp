@@ -43,8 +43,8 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
 // kept and dropped, and its warnings.
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options);
 
-// The atoms as weighted points: atom i is (x_i, (r_i + probe)^2).
-PointSet atom_balls(const std::vector<molecule::Atom>& atoms, double probe);
+// The atoms as weighted points (molecule::atom_balls), as a PointSet.
+PointSet atom_point_set(const std::vector<molecule::Atom>& atoms, double probe);
 
 // Alpha values on the command line: squared radii, finite (the validator
 // rejects inf and nan), and the convention of which simplices are present.

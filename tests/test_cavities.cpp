@@ -13,6 +13,7 @@
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
 #include "alpha/union_of_balls.hpp"
+#include "molecule/atom_balls.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/structure.hpp"
 #include "point_sets.hpp"
@@ -38,7 +39,7 @@ struct Balls {
 
   static std::vector<double> inflated(const std::vector<double>& r, double probe) {
     std::vector<double> w;
-    for (double x : r) w.push_back((x + probe) * (x + probe));
+    for (double x : r) w.push_back(molecule::ball_weight(x, probe));
     return w;
   }
   // Every cavity, however small (min_volume 0: the voids are the b2 classes).

@@ -14,6 +14,7 @@
 
 #include "alpha/union_of_balls.hpp"
 #include "freesasa_output.hpp"
+#include "molecule/atom_balls.hpp"
 #include "molecule/structure.hpp"
 
 namespace {
@@ -49,13 +50,8 @@ TEST_CASE("surface: SASA equals FreeSASA's Lee-Richards on real proteins, in tot
   for (molecule::Atom& a : molecule::read_structure(file).atoms)
     if (!a.hetero) atoms.push_back(std::move(a));
   REQUIRE(atoms.size() == expected.size());
-  std::vector<alpha::Vec3> centers;
-  std::vector<double> weights;
-  for (const molecule::Atom& a : atoms) {
-    centers.push_back(a.position);
-    weights.push_back((a.radius + 1.4) * (a.radius + 1.4));
-  }
-  const alpha::Triangulation t(centers, weights);
+  molecule::AtomBalls balls = molecule::atom_balls(atoms, 1.4);
+  const alpha::Triangulation t(std::move(balls.points), std::move(balls.weights));
   const alpha::AlphaComplex complex(t);
   const alpha::UnionOfBalls u(complex);
 

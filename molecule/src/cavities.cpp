@@ -10,6 +10,7 @@
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
 #include "alpha/persistent_basins.hpp"
+#include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
 
 namespace molecule {
@@ -32,7 +33,7 @@ void check_input(const alpha::AlphaComplex& ac, const std::vector<double>& radii
     const double r = radii[i];
     if (!(r >= 0) || !std::isfinite(r))
       alpha::fail("find_cavities: radius of point " + std::to_string(i) + " is not >= 0");
-    const double w = (r + options.probe) * (r + options.probe);
+    const double w = ball_weight(r, options.probe);
     if (std::fabs(t.weight(i) - w) > 1e-9 * std::max(1.0, w))
       alpha::fail("find_cavities: the complex's weight of point " + std::to_string(i) +
                   " is not (radius + probe)^2");
@@ -88,7 +89,7 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
   const auto& tri = ac.simplices().triangle(p.death_simplex);
   tn.bottleneck_radius = std::numeric_limits<double>::infinity();
   for (Index i : tri) {
-    const double grown_sq = (radii[i] + probe) * (radii[i] + probe) + tn.death_alpha_sq;
+    const double grown_sq = ball_weight(radii[i], probe) + tn.death_alpha_sq;
     tn.bottleneck_radius = std::min(tn.bottleneck_radius, std::sqrt(grown_sq) - radii[i]);
   }
   tn.lining_atoms.assign(tri.begin(), tri.end());

@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "molecule/atom_balls.hpp"
+
 namespace molecule {
 namespace {
 
@@ -16,14 +18,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 PocketSearch search_pockets(const Structure& structure, const CavityOptions& options) {
   PocketSearch out;
   const auto start = std::chrono::steady_clock::now();
-  std::vector<alpha::Vec3> points;
-  std::vector<double> weights, radii;
-  for (const Atom& a : structure.atoms) {
-    points.push_back(a.position);
-    weights.push_back((a.radius + options.probe) * (a.radius + options.probe));
-    radii.push_back(a.radius);
-  }
-  out.triangulation = std::make_unique<alpha::Triangulation>(std::move(points), std::move(weights));
+  AtomBalls balls = atom_balls(structure.atoms, options.probe);
+  std::vector<double> radii;
+  radii.reserve(structure.atoms.size());
+  for (const Atom& a : structure.atoms) radii.push_back(a.radius);
+  out.triangulation = std::make_unique<alpha::Triangulation>(std::move(balls.points), std::move(balls.weights));
   out.complex = std::make_unique<alpha::AlphaComplex>(*out.triangulation);
   out.complex_seconds = seconds_since(start);
 
