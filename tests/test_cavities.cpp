@@ -340,32 +340,22 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   // so depth is the largest distance from a cell centroid to the nearest of
   // their triangles (a point-triangle distance of its own here).
   const auto segment_distance = [](const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec3 ab{b.x - a.x, b.y - a.y, b.z - a.z}, ap{p.x - a.x, p.y - a.y, p.z - a.z};
-    const double u = std::clamp((ab.x * ap.x + ab.y * ap.y + ab.z * ap.z) / (ab.x * ab.x + ab.y * ab.y + ab.z * ab.z), 0.0, 1.0);
-    const Vec3 d{ap.x - u * ab.x, ap.y - u * ab.y, ap.z - u * ab.z};
-    return std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    const double u = std::clamp(dot(b - a, p - a) / dot(b - a, b - a), 0.0, 1.0);
+    return norm(p - a - u * (b - a));
   };
   const auto triangle_distance = [&](const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab{b.x - a.x, b.y - a.y, b.z - a.z}, ac{c.x - a.x, c.y - a.y, c.z - a.z};
-    Vec3 n{ab.y * ac.z - ab.z * ac.y, ab.z * ac.x - ab.x * ac.z, ab.x * ac.y - ab.y * ac.x};
-    const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    n = {n.x / len, n.y / len, n.z / len};
-    const double h = (p.x - a.x) * n.x + (p.y - a.y) * n.y + (p.z - a.z) * n.z;
-    const Vec3 q{p.x - h * n.x, p.y - h * n.y, p.z - h * n.z};  // projection on the plane
-    const auto side = [&](const Vec3& u, const Vec3& v) {  // q left of u->v, seen along n
-      const Vec3 uv{v.x - u.x, v.y - u.y, v.z - u.z}, uq{q.x - u.x, q.y - u.y, q.z - u.z};
-      return (uv.y * uq.z - uv.z * uq.y) * n.x + (uv.z * uq.x - uv.x * uq.z) * n.y + (uv.x * uq.y - uv.y * uq.x) * n.z >= 0;
-    };
-    if (side(a, b) && side(b, c) && side(c, a)) return std::fabs(h);
+    const Vec3 n = (1 / norm(cross(b - a, c - a))) * cross(b - a, c - a);
+    const double h = dot(p - a, n);
+    const Vec3 q = p - h * n;  // projection on the plane
+    const auto left = [&](const Vec3& u, const Vec3& v) { return dot(cross(v - u, q - u), n) >= 0; };
+    if (left(a, b) && left(b, c) && left(c, a)) return std::fabs(h);
     return std::min({segment_distance(p, a, b), segment_distance(p, b, c), segment_distance(p, c, a)});
   };
   for (const Cavity& p : castp.pockets) {
     double depth = 0;
     for (Index c : p.cells) {
       const auto& v = t.cell(c).v;
-      const Vec3 g{(t.point(v[0]).x + t.point(v[1]).x + t.point(v[2]).x + t.point(v[3]).x) / 4,
-                   (t.point(v[0]).y + t.point(v[1]).y + t.point(v[2]).y + t.point(v[3]).y) / 4,
-                   (t.point(v[0]).z + t.point(v[1]).z + t.point(v[2]).z + t.point(v[3]).z) / 4};
+      const Vec3 g = 0.25 * (t.point(v[0]) + t.point(v[1]) + t.point(v[2]) + t.point(v[3]));
       double nearest = std::numeric_limits<double>::infinity();
       for (const molecule::Mouth& m : p.mouths)
         for (Index f : m.triangles) {

@@ -20,12 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dist2(const Vec3& a, const Vec3& b) { return dot(sub(a, b), sub(a, b)); }
+double dist2(const Vec3& a, const Vec3& b) { return dot(a - b, a - b); }
 
 struct BallSet {
   std::vector<Vec3> centers;
@@ -186,13 +181,13 @@ std::vector<double> breakpoints(const BallSet& s) {
   for (std::size_t i = 0; i < n; ++i) z.push_back(s.centers[i].z - s.radii[i]), z.push_back(s.centers[i].z + s.radii[i]);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
-      const Vec3 d = sub(s.centers[j], s.centers[i]);
+      const Vec3 d = s.centers[j] - s.centers[i];
       const double dd = std::sqrt(dot(d, d)), h = (dd * dd + w(i) - w(j)) / (2 * dd), a2 = w(i) - h * h;
       if (a2 <= 0) continue;
       const double cz = s.centers[i].z + h * d.z / dd, spread = std::sqrt(a2 * (1 - d.z * d.z / (dd * dd)));
       z.push_back(cz - spread), z.push_back(cz + spread);
       for (std::size_t k = j + 1; k < n; ++k) {
-        const Vec3 e = sub(s.centers[k], s.centers[i]), nn = cross(d, e);
+        const Vec3 e = s.centers[k] - s.centers[i], nn = cross(d, e);
         const double n2 = dot(nn, nn);
         if (n2 == 0) continue;
         const double A = dot(d, d) + w(i) - w(j), B = dot(e, e) + w(i) - w(k);
@@ -203,7 +198,7 @@ std::vector<double> breakpoints(const BallSet& s) {
         const double lz = std::sqrt(l2) * nn.z / std::sqrt(n2);
         z.push_back(s.centers[i].z + c.z - lz), z.push_back(s.centers[i].z + c.z + lz);
         for (std::size_t m = k + 1; m < n; ++m) {
-          const Vec3 f = sub(s.centers[m], s.centers[i]);
+          const Vec3 f = s.centers[m] - s.centers[i];
           const double det = dot(d, cross(e, f));
           if (det == 0) continue;
           const double C = dot(f, f) + w(i) - w(m);
@@ -280,7 +275,7 @@ BallSet random_balls(std::size_t n, std::uint64_t seed, double box, double rmin,
 }
 
 double tetra_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return std::fabs(dot(sub(b, a), cross(sub(c, a), sub(d, a)))) / 6;
+  return std::fabs(dot(b - a, cross(c - a, d - a))) / 6;
 }
 
 }  // namespace
@@ -614,8 +609,8 @@ TEST_CASE("union of balls: a cell's share is its covered part when the pieces st
   auto inside_cell = [&](const Vec3& x) {
     for (int k = 0; k < 4; ++k) {
       const Vec3& a = p[(k + 1) % 4];
-      const Vec3 n = cross(sub(p[(k + 2) % 4], a), sub(p[(k + 3) % 4], a));
-      if ((dot(n, sub(x, a)) > 0) != (dot(n, sub(p[k], a)) > 0)) return false;
+      const Vec3 n = cross(p[(k + 2) % 4] - a, p[(k + 3) % 4] - a);
+      if ((dot(n, x - a) > 0) != (dot(n, p[k] - a) > 0)) return false;
     }
     return true;
   };

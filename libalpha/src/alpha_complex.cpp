@@ -19,18 +19,6 @@ Simplex cell_simplex(const Triangulation& t, Index c) {
   return Simplex(v[0], v[1], v[2], v[3]);
 }
 
-double tetra_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z,
-               wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
-  return std::fabs(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6;
-}
-
-double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  return std::sqrt(nx * nx + ny * ny + nz * nz) / 2;
-}
-
 // The points (and weights) copied in the order in which the cells first use
 // them. Cells are stored in spatial order but vertex ids are input indices,
 // which may be random in space; the size and attachment tests read points
@@ -346,7 +334,7 @@ double AlphaComplex::volume(Index level) const {
   for (Index c = 0; c < t_->num_cells(); ++c) {
     if (ranks_.cell[c] >= level) continue;
     const auto& cv = t_->cell(c).v;
-    v += tetra_volume(t_->point(cv[0]), t_->point(cv[1]), t_->point(cv[2]), t_->point(cv[3]));
+    v += tetrahedron_volume(t_->point(cv[0]), t_->point(cv[1]), t_->point(cv[2]), t_->point(cv[3]));
   }
   return v;
 }

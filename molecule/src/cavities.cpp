@@ -186,7 +186,7 @@ private:
       cav.sa_volume += m.sa_empty;
       cav.sa_area += m.sa_area;
       const double weight = std::max(0.0, m.sa_empty);
-      weighted.x += weight * m.centroid.x, weighted.y += weight * m.centroid.y, weighted.z += weight * m.centroid.z;
+      weighted = weighted + weight * m.centroid;
       total_weight += weight;
     }
     // Fractional shares are exact only in sum: keep the sums, not below 0.
@@ -228,8 +228,7 @@ private:
 
     const double r2 = options_.burial_radius * options_.burial_radius;
     for (const Vec3& x : t_.points()) {
-      const double dx = x.x - cav.center.x, dy = x.y - cav.center.y, dz = x.z - cav.center.z;
-      cav.burial_atoms += dx * dx + dy * dy + dz * dz <= r2;
+      cav.burial_atoms += dot(x - cav.center, x - cav.center) <= r2;
     }
     return cav;
   }

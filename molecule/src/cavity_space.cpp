@@ -10,13 +10,6 @@ namespace {
 using alpha::Index;
 using alpha::Vec3;
 
-Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
 // Area of the lens two discs (radii r0, r1, centres d apart) share.
 double lens_area(double r0, double r1, double d) {
   if (d >= r0 + r1) return 0;
@@ -41,7 +34,7 @@ CellSpace CavitySpace::cell(Index c) const {
   const auto& v = t.cell(c).v;
   const Vec3 &a = t.point(v[0]), &b = t.point(v[1]), &d = t.point(v[2]), &e = t.point(v[3]);
   CellSpace m;
-  m.volume = std::fabs(dot(b - a, cross(d - a, e - a))) / 6;
+  m.volume = alpha::tetrahedron_volume(a, b, d, e);
   const alpha::CellCover cover = union_.cell_cover(c);
   m.sa_empty = m.volume - cover.volume;
   m.sa_area = cover.area;
@@ -66,7 +59,7 @@ double CavitySpace::open_area(Index f) const {
     covered -= lens_area(std::sqrt(t.weight(ev[0])), std::sqrt(t.weight(ev[1])),
                          norm(t.point(ev[1]) - t.point(ev[0]))) / 2;
   }
-  const double area = norm(cross(t.point(fv[1]) - t.point(fv[0]), t.point(fv[2]) - t.point(fv[0]))) / 2;
+  const double area = alpha::triangle_area(t.point(fv[0]), t.point(fv[1]), t.point(fv[2]));
   return std::max(0.0, area - covered);
 }
 
