@@ -25,6 +25,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/triangulation.hpp"
+#include "median.hpp"
 #include "point_sets.hpp"
 #include "rss.hpp"
 
@@ -60,11 +61,6 @@ struct Case {
   bool peers;  // whether CGAL and GUDHI run on it
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 // One side's runs: times (median) and peak RSS growth (largest).
 struct Side {
   std::vector<double> seconds;
@@ -73,7 +69,7 @@ struct Side {
     seconds.push_back(m.seconds);
     peak_bytes = std::max(peak_bytes, m.peak_bytes);
   }
-  double median_seconds() const { return median(seconds); }
+  double median_seconds() const { return bench::median(seconds); }
 };
 
 struct Result {
@@ -187,7 +183,7 @@ int main(int argc, char** argv) {
     const double n = double(c.points.size());
     const double ours = r.ours.median_seconds();
     std::printf("%-12s %7zu %4d %7.3f %7.3f %7.3f ", c.name.c_str(), c.points.size(), c.reps,
-                median(r.ours_triangulation), median(r.ours_complex), ours);
+                bench::median(r.ours_triangulation), bench::median(r.ours_complex), ours);
     if (c.peers) {
       const double cgal = r.cgal.median_seconds(), gudhi = r.gudhi.median_seconds();
       std::printf("%8.3f %8.3f %7.3f %7.3f ", cgal, gudhi, ours / cgal, ours / gudhi);

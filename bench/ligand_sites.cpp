@@ -58,6 +58,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "median.hpp"
 #include "molecule/structure.hpp"
 
 namespace fs = std::filesystem;
@@ -96,13 +97,6 @@ std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 // The .ds file of the dataset: file name -> ligand codes.
@@ -292,7 +286,7 @@ int run(const Options& o) {
   if (temporary) fs::remove_all(work);
 
   const auto fraction = [&](std::size_t hits) { return ligands_total ? double(hits) / double(ligands_total) : 0.0; };
-  const double pockets_median = median(pockets_per_structure), seconds_median = median(seconds);
+  const double pockets_median = bench::median(pockets_per_structure), seconds_median = bench::median(seconds);
   if (o.json) {
     nlohmann::ordered_json j;
     j["structures"] = entries.size();
