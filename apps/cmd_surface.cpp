@@ -42,20 +42,14 @@ struct Balls {
 };
 
 Balls read_balls(const InputOptions& opt) {
+  const bool structure = molecule::is_structure_file(opt.file);
+  if (!structure && !opt.weighted)
+    throw std::runtime_error(opt.file +
+                             ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
   Balls b;
-  if (!molecule::is_structure_file(opt.file)) {
-    if (!opt.weighted)
-      throw std::runtime_error(opt.file +
-                               ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
-    b.set = read_input(opt);
-    return b;
-  }
-  Stopwatch read_time;
-  molecule::Structure structure = read_structure_file(opt.file, opt.structure);
-  b.set = atom_point_set(structure.atoms, opt.probe);
-  spdlog::info("read {} atoms in {:.3f} s: ball radius = {} radius + probe {} A", structure.atoms.size(),
-               read_time.seconds(), molecule::kRadiusTable, opt.probe);
-  b.atoms = std::move(structure.atoms);
+  std::vector<molecule::Atom> atoms;
+  b.set = read_input(opt, &atoms);
+  if (structure) b.atoms = std::move(atoms);
   return b;
 }
 

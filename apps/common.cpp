@@ -87,12 +87,7 @@ molecule::Structure read_structure_file(const std::string& file, const molecule:
   return structure;
 }
 
-PointSet atom_point_set(const std::vector<molecule::Atom>& atoms, double probe) {
-  molecule::AtomBalls balls = molecule::atom_balls(atoms, probe);
-  return {std::move(balls.points), std::move(balls.weights)};
-}
-
-PointSet read_input(const InputOptions& opt) {
+PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms) {
   Stopwatch read_time;
   if (!molecule::is_structure_file(opt.file)) {
     std::string given;
@@ -107,11 +102,12 @@ PointSet read_input(const InputOptions& opt) {
                  read_time.seconds());
     return set;
   }
-  const molecule::Structure structure = read_structure_file(opt.file, opt.structure);
-  PointSet set = atom_point_set(structure.atoms, opt.probe);
-  spdlog::info("read {} atoms from {} in {:.3f} s: weighted points, radius = {} radius + probe {} A", set.points.size(),
-               opt.file, read_time.seconds(), molecule::kRadiusTable, opt.probe);
-  return set;
+  molecule::Structure structure = read_structure_file(opt.file, opt.structure);
+  molecule::AtomBalls balls = molecule::atom_balls(structure.atoms, opt.probe);
+  spdlog::info("read {} atoms from {} in {:.3f} s: weighted points, radius = {} radius + probe {} A",
+               balls.points.size(), opt.file, read_time.seconds(), molecule::kRadiusTable, opt.probe);
+  if (atoms) *atoms = std::move(structure.atoms);
+  return {std::move(balls.points), std::move(balls.weights)};
 }
 
 std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file) {

@@ -43,9 +43,6 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
 // kept and dropped, and its warnings.
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options);
 
-// The atoms as weighted points (molecule::atom_balls), as a PointSet.
-PointSet atom_point_set(const std::vector<molecule::Atom>& atoms, double probe);
-
 // Alpha values on the command line: squared radii, finite (the validator
 // rejects inf and nan), and the convention of which simplices are present.
 inline constexpr const char* kAlphaSqHelp =
@@ -55,8 +52,9 @@ inline constexpr const char* kAlphaSqHelp =
 CLI::Validator finite_number();
 
 // The points of a point file, or the atoms of a structure file as
-// weighted points (always: ProtOr radius + probe). Logs what was read.
-PointSet read_input(const InputOptions& opt);
+// weighted points (always: ProtOr radius + probe, molecule::atom_balls),
+// the atoms themselves into *atoms when asked. Logs what was read.
+PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms = nullptr);
 
 // The triangulation of the points; library errors about the input (too few
 // distinct points, all coplanar, ...) are rethrown naming the file.
