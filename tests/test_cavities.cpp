@@ -43,11 +43,13 @@ struct Balls {
     return w;
   }
   // Every cavity, however small (min_volume 0: the voids are the b2 classes).
-  Cavities cavities(double split_persistence = molecule::CavityOptions{}.split_persistence) const {
+  Cavities cavities(double split_persistence = molecule::CavityOptions{}.split_persistence,
+                    double split_volume = molecule::CavityOptions{}.split_volume) const {
     molecule::CavityOptions options;
     options.probe = probe;
     options.min_volume = 0;
     options.split_persistence = split_persistence;
+    options.split_volume = split_volume;
     return molecule::find_cavities(complex, radii, options);
   }
   // Whether x lies in no probe-inflated ball.
@@ -302,6 +304,9 @@ TEST_CASE("Cavities: inconsistent input is refused", "[cavities]") {
   CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
   options.probe = -1;
   CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+  options.probe = 0.25;
+  options.split_volume = std::nan("");
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
 }
 
 TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
@@ -322,9 +327,11 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   CHECK(cav.pockets.front().sa_volume > 100);
   for (const Cavity& p : cav.pockets) CHECK(p.score == molecule::cavity_score(p));
 
-  // An infinite split_persistence gives CASTp's pockets: one per region of
-  // the flow with a mouth; the split pockets partition the same cells.
-  const Cavities castp = b.cavities(std::numeric_limits<double>::infinity());
+  // Infinite split_persistence and split_volume give CASTp's pockets: one
+  // per region of the flow with a mouth; the split pockets partition the
+  // same cells.
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cavities castp = b.cavities(inf, inf);
   check_invariants(b, castp);
   const Index level = b.complex.level(0.0);
   const alpha::DiscreteFlow flow(b.complex, level);

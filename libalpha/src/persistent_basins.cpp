@@ -19,10 +19,15 @@ double signed_radius(double alpha_sq) { return std::copysign(std::sqrt(std::fabs
 }  // namespace
 
 std::vector<std::vector<Index>> persistent_basins(const AlphaComplex& ac, Index level, std::span<const Index> cells,
-                                                  double threshold) {
+                                                  const BasinMerging& merging) {
   const Triangulation& t = ac.triangulation();
   const Simplices& s = ac.simplices();
-  if (!(threshold >= 0)) fail("persistent_basins: threshold must be >= 0");
+  if (!(merging.threshold >= 0)) fail("persistent_basins: threshold must be >= 0");
+  if (!merging.mass.empty() && merging.mass.size() != cells.size())
+    fail("persistent_basins: " + std::to_string(merging.mass.size()) + " masses for " + std::to_string(cells.size()) +
+         " cells");
+  for (double m : merging.mass)
+    if (!(m >= 0) || !std::isfinite(m)) fail("persistent_basins: a mass is not a finite value >= 0");
   if (!std::is_sorted(cells.begin(), cells.end())) fail("persistent_basins: cells not sorted");
   for (Index c : cells)
     if (c >= t.num_cells() || t.is_infinite(c) || ac.cell_entry(c) < level)
@@ -48,8 +53,11 @@ std::vector<std::vector<Index>> persistent_basins(const AlphaComplex& ac, Index 
     return std::tie(y.entry, x.triangle) < std::tie(x.entry, y.triangle);
   });
 
-  // Union-find whose root is the component's largest cell (the elder).
+  // Union-find whose root is the component's largest cell (the elder),
+  // with the component's mass at its root.
   std::vector<Index> parent(cells.size());
+  std::vector<double> mass(merging.mass.begin(), merging.mass.end());
+  mass.resize(cells.size(), 0.0);
   std::iota(parent.begin(), parent.end(), Index(0));
   const auto find = [&](Index x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
@@ -73,7 +81,12 @@ std::vector<std::vector<Index>> persistent_basins(const AlphaComplex& ac, Index 
     if (a == b) continue;
     if (!elder(a, b)) std::swap(a, b);
     const Index top = ac.cell_entry(cells[b]);
-    if (top == p.entry || radius(top) - radius(p.entry) <= threshold) parent[b] = a;
+    if (top != p.entry) {
+      if (radius(top) - radius(p.entry) > merging.threshold) continue;
+      if (mass[a] >= merging.min_mass && mass[b] >= merging.min_mass && mass[a] + mass[b] > merging.max_mass) continue;
+    }
+    parent[b] = a;
+    mass[a] += mass[b];
   }
 
   std::vector<std::vector<Index>> basins;

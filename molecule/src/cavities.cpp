@@ -26,6 +26,8 @@ void check_input(const alpha::AlphaComplex& ac, const std::vector<double>& radii
                 " points");
   if (!(options.probe >= 0) || !std::isfinite(options.probe)) alpha::fail("find_cavities: probe must be >= 0");
   if (!(options.split_persistence >= 0)) alpha::fail("find_cavities: split_persistence must be >= 0");
+  if (std::isnan(options.split_volume) || std::isnan(options.split_min_volume))
+    alpha::fail("find_cavities: split_volume or split_min_volume is not a number");
   if (!(options.burial_radius >= 0) || !std::isfinite(options.burial_radius))
     alpha::fail("find_cavities: burial_radius must be >= 0");
   if (std::isnan(options.min_volume)) alpha::fail("find_cavities: min_volume is not a number");
@@ -132,7 +134,12 @@ public:
         keep(out.voids, build(cells, region_mouths));
         continue;
       }
-      const auto basins = alpha::persistent_basins(ac_, level_, cells, options_.split_persistence);
+      std::vector<double> free_volume;
+      free_volume.reserve(cells.size());
+      for (Index c : cells) free_volume.push_back(std::max(0.0, space_.cell(c).sa_empty));
+      const auto basins = alpha::persistent_basins(
+          ac_, level_, cells,
+          {options_.split_persistence, free_volume, options_.split_min_volume, options_.split_volume});
       for (const auto& basin : basins) {
         for (Index c : basin) cavity_of_[c] = next_id;
         ++next_id;

@@ -11,24 +11,31 @@
 // void). A region with empty facets towards the outside is a pocket; one
 // without is a VOID (an enclosed cavity: the voids are counted by b2).
 //
-// A CASTp pocket can be a long groove holding several binding sites, so it
-// is split into POCKETS where it narrows (alpha/persistent_basins.hpp): the
-// basins of its largest empty spheres, merged unless the radius of a
-// basin's widest orthosphere exceeds that of the passage into its
-// neighbour by at least CavityOptions::split_persistence. Each pocket
-// opens to the outside or to a neighbouring pocket of the same region
-// through its mouths. With an infinite split_persistence the pockets are
-// exactly CASTp's.
+// A CASTp pocket can be a long groove or a wide cleft holding several
+// binding sites, so it is split into POCKETS (alpha/persistent_basins.hpp,
+// the basins of its largest empty spheres) at two kinds of passage:
+// - where it narrows: a basin whose widest orthosphere's radius exceeds
+//   that of the passage into its neighbour by more than
+//   CavityOptions::split_persistence stays apart;
+// - where it outgrows a ligand site: two parts that each hold at least
+//   CavityOptions::split_min_volume of free space (a fragment's site) and
+//   together more than CavityOptions::split_volume (a drug-sized ligand's
+//   site) stay apart, however wide the passage between them, unless the
+//   smaller one's widest cell flows into the other.
+// Each pocket opens to the outside or to a neighbouring pocket of the same
+// region through its mouths. With infinite split_persistence and
+// split_volume the pockets are exactly CASTp's.
 //
 // TUNNELS are 1-cycles of the complex alive at alpha_sq = 0 that die later.
 //
 // Too small to hold the probe: sa_volume is the space the probe's centre
 // can reach in the cavity (points farther than r_i + probe from every atom
 // centre). Cavities whose sa_volume is below CavityOptions::min_volume are
-// dropped (default 1 A^3: below that the probe can only rattle by a
-// fraction of an Angstrom, a dent rather than a cavity; on pockets-dev
-// this halves the pockets and loses no ligand site). With min_volume = 0
-// the voids are exactly the b2 classes at alpha_sq = 0.
+// dropped (default 4 A^3, a ball of radius 1 A: in less the probe cannot
+// move an Angstrom every way, a dent rather than a cavity; on pockets-dev
+// any value from 3 to 6 A^3 finds the same ligand sites, and 4 leaves a
+// median of 7 pockets per structure where 1 leaves 13). With
+// min_volume = 0 the voids are exactly the b2 classes at alpha_sq = 0.
 //
 // All values here are in Angstrom (lengths), Angstrom^2 and Angstrom^3, or
 // squared Angstrom for alpha_sq values (as everywhere in alphapocket).
@@ -128,11 +135,20 @@ struct Cavities {
 
 struct CavityOptions {
   double probe = 1.4;       // A; the complex must be built with radii r_i + probe
-  double min_volume = 1;    // A^3; pockets and voids with sa_volume below it are dropped
+  double min_volume = 4;    // A^3; pockets and voids with sa_volume below it are dropped
   // A (orthosphere radius): a region's basins stay separate pockets when
-  // their widest sphere's radius exceeds the passage's by this much;
-  // infinity: CASTp's whole pockets. Calibrated on pockets-dev.
+  // their widest sphere's radius exceeds the passage's by this much
+  // (infinity, with an infinite split_volume: CASTp's whole pockets).
+  // Calibrated on pockets-dev.
   double split_persistence = 0.25;
+  // A^3 of free (sa_volume) space. The free space is about 6-8 A^3 per
+  // heavy atom of a bound ligand on pockets-dev, so 150 A^3 is the site of
+  // a drug-sized ligand of some 20-25 heavy atoms and 30 A^3 that of a
+  // fragment of 4-5. Infinite split_volume: no size rule. Chosen from a
+  // plateau on pockets-dev (split_min_volume 20-35 with split_volume
+  // 50-150 all raise DCC and DCA by 1-4 ligands of 51).
+  double split_volume = 150;
+  double split_min_volume = 30;
   double burial_radius = 14;  // A, for Cavity::burial_atoms
 };
 
