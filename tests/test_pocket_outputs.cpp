@@ -203,6 +203,9 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   const json& par = j["parameters"];
   CHECK(par["probe"] == 1.4);
   CHECK(par["min_volume"] == molecule::CavityOptions{}.min_volume);
+  CHECK(par["split_persistence"] == molecule::CavityOptions{}.split_persistence);
+  CHECK(par["split_volume"] == molecule::CavityOptions{}.split_volume);
+  CHECK(par["split_min_volume"] == molecule::CavityOptions{}.split_min_volume);
   CHECK(par["radii"] == "ProtOr");
   CHECK(par["alpha_sq"] == 0.0);
 

@@ -165,6 +165,9 @@ json pocket_report(const PocketRun& run) {
   json parameters = {
       {"probe", run.options.probe},
       {"min_volume", run.options.min_volume},
+      {"split_persistence", run.options.split_persistence},
+      {"split_volume", run.options.split_volume},
+      {"split_min_volume", run.options.split_min_volume},
       {"radii", std::string(kRadiusTable)},
       {"alpha_sq", 0.0},
   };
