@@ -260,7 +260,7 @@ Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>&
 }
 
 double cavity_score(const Cavity& cavity) {
-  return cavity.sa_volume * std::pow(double(cavity.burial_atoms) / 600, 12);
+  return std::min(cavity.sa_volume, kLigandSiteVolume) * std::pow(double(cavity.burial_atoms) / 600, 12);
 }
 
 void rank_cavities(std::vector<Cavity>& cavities) {

@@ -133,6 +133,11 @@ struct Cavities {
   std::vector<Tunnel> tunnels;  // by decreasing death_alpha_sq (widest bottleneck first)
 };
 
+// Free space (sa_volume, A^3) of the site of a drug-sized ligand of some
+// 20-25 heavy atoms: on pockets-dev a bound ligand's pocket holds about
+// 6-8 A^3 of it per heavy atom.
+inline constexpr double kLigandSiteVolume = 150;
+
 struct CavityOptions {
   double probe = 1.4;       // A; the complex must be built with radii r_i + probe
   double min_volume = 4;    // A^3; pockets and voids with sa_volume below it are dropped
@@ -141,13 +146,11 @@ struct CavityOptions {
   // (infinity, with an infinite split_volume: CASTp's whole pockets).
   // Calibrated on pockets-dev.
   double split_persistence = 0.25;
-  // A^3 of free (sa_volume) space. The free space is about 6-8 A^3 per
-  // heavy atom of a bound ligand on pockets-dev, so 150 A^3 is the site of
-  // a drug-sized ligand of some 20-25 heavy atoms and 30 A^3 that of a
-  // fragment of 4-5. Infinite split_volume: no size rule. Chosen from a
-  // plateau on pockets-dev (split_min_volume 20-35 with split_volume
-  // 50-150 all raise DCC and DCA by 1-4 ligands of 51).
-  double split_volume = 150;
+  // A^3 of free (sa_volume) space: a ligand site (kLigandSiteVolume) and
+  // that of a fragment of 4-5 heavy atoms. Infinite split_volume: no size
+  // rule. Chosen from a plateau on pockets-dev (split_min_volume 20-35
+  // with split_volume 50-150 all raise DCC and DCA by 1-4 ligands of 51).
+  double split_volume = kLigandSiteVolume;
   double split_min_volume = 30;
   double burial_radius = 14;  // A, for Cavity::burial_atoms
 };
@@ -161,9 +164,12 @@ Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>&
 
 // The ranking score of a cavity (larger is better): how likely it is to
 // bind a drug-like ligand, from its size and its burial,
-//   score = sa_volume * (burial_atoms / 600)^12,
+//   score = min(sa_volume, kLigandSiteVolume) * (burial_atoms / 600)^12,
 // the free space for a ligand weighted steeply by how deep in the protein
-// it lies: 600 is about the number of heavy atoms that fill a 14 A sphere
+// it lies. Space beyond one drug-sized site does not make a better site
+// (a pocket that large is one the size rule could not split; on
+// pockets-dev the cap moves the hit to rank 1 for one ligand, and any cap
+// of 100-150 A^3 does the same). 600 is about the number of heavy atoms that fill a 14 A sphere
 // inside a protein (one per ~19 A^3), so the ratio is the share of the
 // burial sphere the molecule fills, and 10% fewer atoms around a cavity
 // cost it a factor 3.5. The exponent is calibrated on pockets-dev (DCC
