@@ -333,6 +333,17 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   const double inf = std::numeric_limits<double>::infinity();
   const Cavities castp = b.cavities(inf, inf);
   check_invariants(b, castp);
+  // The size rule splits what persistence alone leaves whole: without it
+  // fewer pockets, and a larger largest one.
+  const Cavities by_persistence = b.cavities(molecule::CavityOptions{}.split_persistence, inf);
+  check_invariants(b, by_persistence);
+  const auto largest = [](const Cavities& c) {
+    double v = 0;
+    for (const Cavity& p : c.pockets) v = std::max(v, p.sa_volume);
+    return v;
+  };
+  CHECK(by_persistence.pockets.size() < cav.pockets.size());
+  CHECK(largest(by_persistence) > largest(cav));
   const Index level = b.complex.level(0.0);
   const alpha::DiscreteFlow flow(b.complex, level);
   std::set<Index> with_mouth;
