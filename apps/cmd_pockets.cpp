@@ -145,12 +145,13 @@ int run_pockets(const PocketsOptions& opt) {
   run.mesh_format = opt.mesh;
 
   Stopwatch write_time;
-  const std::vector<std::string> written = out.write(run, absolute_path(file));
+  const nlohmann::ordered_json report = molecule::pocket_report(run);
+  const std::vector<std::string> written = out.write(run, report, absolute_path(file));
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 
   if (opt.json) {
-    std::puts(molecule::pocket_report(run).dump().c_str());
+    std::puts(report.dump().c_str());
   } else {
     print_summary(opt, outdir, structure, cavities);
   }

@@ -44,6 +44,11 @@ void PocketOutputDir::create(const fs::path& dir) {
 }
 
 std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const std::string& structure_path) {
+  return write(run, pocket_report(run), structure_path);
+}
+
+std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nlohmann::ordered_json& report,
+                                                const std::string& structure_path) {
   std::vector<std::string> written;
   const auto text_file = [&](const std::string& name, const std::string& content) {
     write_file_atomically((path_ / name).string(), content);
@@ -55,7 +60,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const std:
     written.push_back(name);
   };
 
-  text_file("report.json", pocket_report(run).dump(2) + "\n");
+  text_file("report.json", report.dump(2) + "\n");
   text_file("pockets.csv", pockets_csv(run));
   text_file("pockets.pml", pymol_script(run, structure_path));
   const alpha::AlphaComplex& ac = *run.search->complex;

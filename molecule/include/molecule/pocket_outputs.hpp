@@ -38,6 +38,10 @@ public:
   // Writes every file; structure_path is what pockets.pml loads. Returns
   // the names written, relative to the directory.
   std::vector<std::string> write(const PocketRun& run, const std::string& structure_path);
+  // The same with report.json from `report` (pocket_report(run), built
+  // once by a caller that also prints it).
+  std::vector<std::string> write(const PocketRun& run, const nlohmann::ordered_json& report,
+                                 const std::string& structure_path);
 
 private:
   std::filesystem::path path_;
