@@ -132,6 +132,16 @@ void check_all_pairs(SizeKernel& k, const std::vector<Simplex>& s, const std::ve
   CHECK(wrong == 0);
 }
 
+// `count` random simplices of `in`: each size against its exact rational,
+// and every pair's order.
+void check_random_simplices(SizeKernel& k, const Input& in, std::size_t count, std::uint64_t seed) {
+  std::vector<Simplex> s;
+  std::vector<mpq_class> exact;
+  random_simplices(in, count, seed, s, exact);
+  for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
+  check_all_pairs(k, s, exact);
+}
+
 Input hand_built() {
   Input in;
   in.pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}};
@@ -218,11 +228,7 @@ TEST_CASE("filtered comparisons agree with exact rationals on random simplices",
     in.pts = testing::random_points(300, weighted ? 21 : 22, 10.0);
     if (weighted) in.w = testing::random_weights(300, 23, -0.5, 2.0);
     SizeKernel k = in.kernel();
-    std::vector<Simplex> s;
-    std::vector<mpq_class> exact;
-    random_simplices(in, 400, weighted ? 24 : 25, s, exact);
-    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
-    check_all_pairs(k, s, exact);
+    check_random_simplices(k, in, 400, weighted ? 24 : 25);
     // Random sizes almost never tie: the filter decides nearly everything.
     CHECK(k.stats().compare.filtered > 0.99 * k.stats().compare.calls());
   }
@@ -238,11 +244,7 @@ TEST_CASE("ties on an integer grid compare exactly equal", "[sizes]") {
     if (weighted)
       for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back(1.0 + double(i % 2));
     SizeKernel k = in.kernel();
-    std::vector<Simplex> s;
-    std::vector<mpq_class> exact;
-    random_simplices(in, 300, 31, s, exact);
-    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
-    check_all_pairs(k, s, exact);
+    check_random_simplices(k, in, 300, 31);
     CHECK(k.stats().compare.perturbed > 1000);  // exact ties, each returned as 0
   }
 }
@@ -339,11 +341,7 @@ TEST_CASE("inputs outside the filter's range are compared exactly", "[sizes]") {
     in.pts = testing::random_points(40, 51);
     for (Vec3& p : in.pts) p = {p.x * scale, p.y * scale, p.z * scale};
     SizeKernel k = in.kernel();
-    std::vector<Simplex> s;
-    std::vector<mpq_class> exact;
-    random_simplices(in, 40, 52, s, exact);
-    for (std::size_t i = 0; i < s.size(); ++i) check_size(k, in, s[i], exact[i]);
-    check_all_pairs(k, s, exact);
+    check_random_simplices(k, in, 40, 52);
   }
 }
 
