@@ -199,8 +199,9 @@ void AlphaComplex::rank_critical() {
       for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
       return;
     }
-    exact.clear();
-    for (std::size_t k = b; k < e; ++k) exact.push_back(exact_size(k));
+    // The members before `same` equal `first`: no need to evaluate them again.
+    exact.assign(same - b, first);
+    for (std::size_t k = same; k < e; ++k) exact.push_back(exact_size(k));
     by_value.resize(e - b);
     std::iota(by_value.begin(), by_value.end(), std::size_t(0));
     auto compare = [&](std::size_t x, std::size_t y) { return count(compare_exact(exact[x], exact[y])); };
