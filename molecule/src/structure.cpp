@@ -20,7 +20,6 @@
 namespace molecule {
 namespace {
 
-
 [[noreturn]] void fail(const std::string& name, const std::string& what) { throw StructureError(name + ": " + what); }
 
 // ---------------------------------------------------------------- input
