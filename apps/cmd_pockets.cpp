@@ -9,7 +9,8 @@
 //   pockets.csv   one row per pocket
 //   pockets.pml   PyMOL script        pockets.pdb  centres as pseudo-atoms
 //   meshes/       one mesh per pocket and void, and the molecule's surface
-// then prints a one-screen summary (or, with --json, the report) on stdout.
+// then prints a one-screen summary of the best binding sites (pockets and
+// large voids; or, with --json, the report) on stdout.
 //
 // Every file is written whole or not at all (temporary file + rename). The
 // output directory is created first, so that a bad OUTDIR fails at once;
@@ -52,7 +53,7 @@ struct PocketsOptions {
   bool json = false;
 };
 
-// Pockets shown in the summary, and its width in columns.
+// Sites shown in the summary, and its width in columns.
 constexpr std::size_t kSummaryRows = 10;
 constexpr std::size_t kSummaryWidth = 100;
 
@@ -89,24 +90,26 @@ std::string residue_list(const std::vector<molecule::Atom>& atoms, const molecul
 
 void print_summary(const PocketsOptions& opt, const std::string& outdir, const molecule::Structure& structure,
                    const molecule::Cavities& cavities) {
-  const auto& pockets = cavities.pockets;
+  const auto& sites = cavities.sites;
   std::printf("%s: %s\n", opt.input.file.c_str(), molecule::summary(structure.report).c_str());
   std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
               cavities.sa_area, cavities.sa_volume);
-  std::printf("%zu pocket%s, %zu void%s, %zu tunnel%s; written to %s/\n", pockets.size(),
-              pockets.size() == 1 ? "" : "s", cavities.voids.size(), cavities.voids.size() == 1 ? "" : "s",
+  std::printf("%zu pocket%s, %zu void%s, %zu tunnel%s; written to %s/\n", cavities.pockets.size(),
+              cavities.pockets.size() == 1 ? "" : "s", cavities.voids.size(), cavities.voids.size() == 1 ? "" : "s",
               cavities.tunnels.size(), cavities.tunnels.size() == 1 ? "" : "s", outdir.c_str());
-  if (pockets.empty()) return;
-  std::printf("\nrank   score  SA vol A^3  depth A  mouths  lining residues\n");
-  const std::size_t prefix = 43;  // columns before the residues
-  for (std::size_t i = 0; i < std::min(pockets.size(), kSummaryRows); ++i) {
-    const molecule::Cavity& c = pockets[i];
-    std::printf("%4zu %7.3f %11.1f %8.1f %7zu  %s\n", i + 1, c.score, c.sa_volume, c.depth, c.mouths.size(),
-                residue_list(structure.atoms, c, kSummaryWidth - prefix).c_str());
+  if (sites.empty()) return;
+  std::printf("\nsite  cavity       score  SA vol A^3  depth A  mouths  lining residues\n");
+  const std::size_t prefix = 55;  // columns before the residues
+  for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
+    const molecule::Site& s = sites[i];
+    const molecule::Cavity& c = (s.is_void ? cavities.voids : cavities.pockets)[s.index];
+    const std::string cavity = (s.is_void ? "void " : "pocket ") + std::to_string(s.index + 1);
+    std::printf("%4zu  %-10s %7.3f %11.1f %8.1f %7zu  %s\n", i + 1, cavity.c_str(), c.score, c.sa_volume, c.depth,
+                c.mouths.size(), residue_list(structure.atoms, c, kSummaryWidth - prefix).c_str());
   }
-  if (pockets.size() > kSummaryRows)
-    std::printf("(top %zu of %zu pockets; all in %s/pockets.csv and report.json)\n", kSummaryRows, pockets.size(),
-                outdir.c_str());
+  if (sites.size() > kSummaryRows)
+    std::printf("(top %zu of %zu sites; all in %s/report.json, pockets in pockets.csv)\n", kSummaryRows,
+                sites.size(), outdir.c_str());
 }
 
 int run_pockets(const PocketsOptions& opt) {

@@ -1,5 +1,6 @@
 // Ligand-binding-site benchmark of `alphapocket pockets`: how often a
-// top-ranked pocket is where a ligand binds, on holo structures whose
+// top-ranked site (a pocket, or a void that can hold a ligand: report.json's
+// "sites") is where a ligand binds, on holo structures whose
 // ligands were removed before the search (the pockets command drops hetero
 // groups by default).
 //
@@ -14,7 +15,7 @@
 //                      DIR/<name>/report.json for each structure <name>.pdb
 //   --keep DIR         run into DIR/<name>/ and keep the results (default: a
 //                      temporary directory, removed at the end)
-//   --details          one line per structure: pockets, time, rank of the
+//   --details          one line per structure: sites, time, rank of the
 //                      first hit per ligand
 //   --json             the figures as one JSON object on stdout instead of the table
 //   -- ...             further options for `alphapocket pockets` (e.g. --probe 1.6)
@@ -22,15 +23,15 @@
 // REUSE (e.g. to tune the pocket score): generate reports with any build or
 // options, `alphapocket pockets F -o DIR/<name>` per structure, then
 // `ligand_sites --reports DIR --json` scores them without running anything;
-// only "pockets"[i]["center"] of report.json, in rank order, is read.
+// only "sites"[i]["center"] of report.json, in rank order, is read.
 //
 // Ligands (the dataset's definition, /work/shared/data/README.md): HETATM
 // residues whose name is in the file's code list, hydrogens left out;
 // residues closer than 1.7 A to each other (any atom pair) are merged into
 // one ligand (glycans, peptides); its centre is the mean of its heavy atoms.
-// A pocket HITS a ligand by DCC when its centre lies within 4 A of the
+// A site HITS a ligand by DCC when its centre lies within 4 A of the
 // ligand's centre, by DCA when within 4 A of any ligand atom. Top-k: some
-// pocket of rank <= k hits; top-(n+2): k = number of ligands of the
+// site of rank <= k hits; top-(n+2): k = number of ligands of the
 // structure + 2. Figures are fractions of all ligands. Runtime is the wall
 // clock of one `alphapocket pockets` process (reading, computing, writing
 // every output file), median over the structures.
@@ -173,19 +174,19 @@ std::vector<Ligand> read_ligands(const fs::path& file, const std::vector<std::st
   return ligands;
 }
 
-std::vector<alpha::Vec3> pocket_centers(const fs::path& report_file) {
+std::vector<alpha::Vec3> site_centers(const fs::path& report_file) {
   std::ifstream in(report_file);
   if (!in) throw std::runtime_error(report_file.string() + ": cannot open");
   const nlohmann::json report = nlohmann::json::parse(in);
   std::vector<alpha::Vec3> centers;
-  for (const auto& p : report.at("pockets")) {
+  for (const auto& p : report.at("sites")) {
     const auto& c = p.at("center");
     centers.push_back({c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>()});
   }
   return centers;
 }
 
-// Rank (1-based) of the first pocket hitting the ligand, 0 for none.
+// Rank (1-based) of the first site hitting the ligand, 0 for none.
 std::size_t first_hit(const std::vector<alpha::Vec3>& centers, const Ligand& l, bool dca) {
   for (std::size_t i = 0; i < centers.size(); ++i) {
     double d = distance(centers[i], l.center);
@@ -248,7 +249,7 @@ int run(const Options& o) {
 
   std::array<std::size_t, 3> dcc{}, dca{};  // hits at top-1, top-3, top-(n+2)
   std::size_t ligands_total = 0;
-  std::vector<double> pockets_per_structure, seconds;
+  std::vector<double> sites_per_structure, seconds;
   for (const auto& [file, codes] : entries) {
     const fs::path structure = o.dataset / file;
     const std::string name = structure.stem().string();
@@ -260,10 +261,10 @@ int run(const Options& o) {
       if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
       seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    const std::vector<alpha::Vec3> centers = pocket_centers(outdir / "report.json");
+    const std::vector<alpha::Vec3> centers = site_centers(outdir / "report.json");
     const std::vector<Ligand> ligands = read_ligands(structure, codes);
     if (ligands.empty()) std::fprintf(stderr, "warning: %s: none of its listed ligands found\n", file.c_str());
-    pockets_per_structure.push_back(double(centers.size()));
+    sites_per_structure.push_back(double(centers.size()));
     ligands_total += ligands.size();
 
     std::string detail;
@@ -280,20 +281,20 @@ int run(const Options& o) {
     if (o.details) {
       char time[32] = "";
       if (o.reports.empty()) std::snprintf(time, sizeof time, " %6.2f s", seconds.back());
-      std::fprintf(stderr, "%-10s %3zu pockets%s%s\n", name.c_str(), centers.size(), time, detail.c_str());
+      std::fprintf(stderr, "%-10s %3zu sites%s%s\n", name.c_str(), centers.size(), time, detail.c_str());
     }
   }
   if (temporary) fs::remove_all(work);
 
   const auto fraction = [&](std::size_t hits) { return ligands_total ? double(hits) / double(ligands_total) : 0.0; };
-  const double pockets_median = bench::median(pockets_per_structure), seconds_median = bench::median(seconds);
+  const double sites_median = bench::median(sites_per_structure), seconds_median = bench::median(seconds);
   if (o.json) {
     nlohmann::ordered_json j;
     j["structures"] = entries.size();
     j["ligands"] = ligands_total;
     j["dcc"] = {fraction(dcc[0]), fraction(dcc[1]), fraction(dcc[2])};
     j["dca"] = {fraction(dca[0]), fraction(dca[1]), fraction(dca[2])};
-    j["pockets_median"] = pockets_median;
+    j["sites_median"] = sites_median;
     j["seconds_median"] = seconds.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(seconds_median);
     std::puts(j.dump().c_str());
     return 0;
@@ -305,7 +306,7 @@ int run(const Options& o) {
               fraction(dcc[2]), kFpocket.dcc[0], kFpocket.dcc[1], kFpocket.dcc[2]);
   std::printf("%-26s %7.3f %7.3f %9.3f   %.3f %.3f %.3f\n", "DCA <= 4 A", fraction(dca[0]), fraction(dca[1]),
               fraction(dca[2]), kFpocket.dca[0], kFpocket.dca[1], kFpocket.dca[2]);
-  std::printf("%-26s %7.1f %27.0f\n", "pockets per structure", pockets_median, kFpocket.pockets);
+  std::printf("%-26s %7.1f %27.0f\n", "sites per structure", sites_median, kFpocket.pockets);
   if (!seconds.empty())
     std::printf("%-26s %7.2f %27.2f\n", "seconds per structure", seconds_median, kFpocket.seconds);
   std::printf("(medians over the structures; seconds: wall clock of one `alphapocket pockets` run, all files written)\n");

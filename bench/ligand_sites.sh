@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds alphapocket and the ligand-site benchmark in BUILD_DIR (default
 # build/; a new one is configured for Release) and runs it: DCC and DCA at
-# top-1 and top-3 on the pockets-dev structures, pockets per structure and
+# top-1 and top-3 on the pockets-dev structures, sites per structure and
 # runtime, next to fpocket's figures. Arguments go to ligand_sites (see the
 # comment at the top of bench/ligand_sites.cpp), e.g.
 #

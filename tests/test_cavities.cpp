@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "alpha/alpha_complex.hpp"
@@ -15,6 +17,7 @@
 #include "alpha/union_of_balls.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "point_sets.hpp"
 
@@ -132,6 +135,23 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   for (const Cavity& c : cav.voids) check_cavity(c, false);
   for (const auto* list : {&cav.pockets, &cav.voids})
     for (std::size_t k = 1; k < list->size(); ++k) CHECK((*list)[k - 1].score >= (*list)[k].score);
+  // Sites: each pocket once and each void that holds a ligand site, best
+  // first; among equal scores pockets first, each kind in its list's order.
+  std::vector<std::pair<bool, std::size_t>> expected, sites;
+  for (std::size_t k = 0; k < cav.pockets.size(); ++k) expected.emplace_back(false, k);
+  for (std::size_t k = 0; k < cav.voids.size(); ++k)
+    if (cav.voids[k].sa_volume >= molecule::kLigandSiteVolume) expected.emplace_back(true, k);
+  for (const molecule::Site& site : cav.sites) sites.emplace_back(site.is_void, site.index);
+  std::sort(sites.begin(), sites.end());
+  CHECK(sites == expected);
+  const auto site_score = [&](const molecule::Site& x) {
+    return (x.is_void ? cav.voids : cav.pockets).at(x.index).score;
+  };
+  for (std::size_t k = 1; k < cav.sites.size(); ++k) {
+    const molecule::Site &a = cav.sites[k - 1], &b = cav.sites[k];
+    CHECK(site_score(a) >= site_score(b));
+    if (site_score(a) == site_score(b)) CHECK(std::tie(a.is_void, a.index) < std::tie(b.is_void, b.index));
+  }
   for (std::size_t k = 0; k < cav.tunnels.size(); ++k) {
     const auto& tn = cav.tunnels[k];
     CHECK(tn.birth_alpha_sq <= 0);
@@ -162,6 +182,9 @@ TEST_CASE("Cavities: a hollow shell of balls holds exactly one void", "[cavities
   REQUIRE(cav.voids.size() == 1);
   CHECK(cav.pockets.empty());
   const Cavity& v = cav.voids.front();
+  // Large enough for a drug-sized ligand: a binding site.
+  REQUIRE(cav.sites.size() == 1);
+  CHECK(cav.sites.front().is_void);
   // The inner cells share (up to rounding) the sphere centred at the
   // origin, orthogonal to every inflated ball: size R^2 - rho^2.
   CHECK(v.fill_alpha_sq == Approx(R * R - rho * rho).epsilon(1e-9));
@@ -238,6 +261,7 @@ TEST_CASE("Cavities: a grid of balls has one void per cube, with analytic spectr
   check_invariants(b, cav);
   REQUIRE(cav.voids.size() == 64);
   CHECK(cav.pockets.empty());
+  CHECK(cav.sites.empty());  // each void far too small for a ligand
   // The void's free volume, by a midpoint rule over the unit cube (only
   // its 8 corner balls reach it).
   const double h = 0.005;
@@ -307,6 +331,28 @@ TEST_CASE("Cavities: inconsistent input is refused", "[cavities]") {
   options.probe = 0.25;
   options.split_volume = std::nan("");
   CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+}
+
+TEST_CASE("Cavities: an enclosed ligand site is a void and a site (3stdA)", "[cavities]") {
+  // Scytalone dehydratase closes over its inhibitor MQ0: without it, the
+  // site is a void of some 165 A^3 of free space, the best site of all.
+  const molecule::Structure st = molecule::read_structure(ALPHAPOCKET_TEST_DATA "/3stdA.pdb");
+  const auto ligand = std::find_if(st.hetero_groups.begin(), st.hetero_groups.end(),
+                                   [](const molecule::HeteroGroup& g) { return g.residue_name == "MQ0"; });
+  REQUIRE(ligand != st.hetero_groups.end());
+  const molecule::PocketSearch search = molecule::search_pockets(st, molecule::CavityOptions{});
+  const Cavities& cav = search.cavities;
+  REQUIRE(!cav.sites.empty());
+  const molecule::Site best = cav.sites.front();
+  REQUIRE(best.is_void);
+  const Cavity& site = cav.voids.at(best.index);
+  CHECK(site.sa_volume >= molecule::kLigandSiteVolume);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const molecule::Atom& a : ligand->atoms) nearest = std::min(nearest, alpha::norm(a.position - site.center));
+  CHECK(nearest < 4);  // a hit by the DCA criterion
+  // No pocket comes within 4 A of the ligand: as pockets only, it is missed.
+  for (const Cavity& p : cav.pockets)
+    for (const molecule::Atom& a : ligand->atoms) CHECK(alpha::norm(a.position - p.center) > 4);
 }
 
 TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {

@@ -186,7 +186,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   CHECK(keys == std::vector<std::string>{"alphapocket", "input", "parameters", "molecule", "pockets", "voids",
-                                         "tunnels"});
+                                         "sites", "tunnels"});
   CHECK(j["alphapocket"] == "test");
 
   const json& in = j["input"];
@@ -215,12 +215,25 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   CHECK(mol["sa_volume"].get<double>() > 0);
   CHECK(mol["pockets"] == cav.pockets.size());
   CHECK(mol["voids"] == cav.voids.size());
+  CHECK(mol["sites"] == cav.sites.size());
   CHECK(mol["tunnels"] == cav.tunnels.size());
   CHECK(mol["mesh"] == "meshes/molecule.ply");
 
   REQUIRE_FALSE(cav.pockets.empty());  // 1A26 has its ligand's pocket, at least
   check_cavities(j["pockets"], cav.pockets, "pocket", r.structure);
   check_cavities(j["voids"], cav.voids, "void", r.structure);
+
+  // Each site names its cavity, whose score and centre it repeats.
+  REQUIRE(j["sites"].size() == cav.sites.size());
+  for (std::size_t i = 0; i < cav.sites.size(); ++i) {
+    const json& site = j["sites"][i];
+    INFO("site " << i + 1);
+    CHECK(site["rank"] == i + 1);
+    CHECK(site["kind"] == (cav.sites[i].is_void ? "void" : "pocket"));
+    CHECK(site["cavity_rank"] == cav.sites[i].index + 1);
+    const json& cavity = j[cav.sites[i].is_void ? "voids" : "pockets"].at(cav.sites[i].index);
+    for (const char* key : {"score", "sa_volume", "center"}) CHECK(site[key] == cavity[key]);
+  }
 
   REQUIRE(j["tunnels"].size() == cav.tunnels.size());
   for (std::size_t i = 0; i < cav.tunnels.size(); ++i) {

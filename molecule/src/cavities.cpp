@@ -241,6 +241,16 @@ private:
   }
 };
 
+std::vector<Site> rank_sites(const Cavities& cavities) {
+  std::vector<Site> sites;
+  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i});
+  const auto score = [&](const Site& s) { return (s.is_void ? cavities.voids : cavities.pockets)[s.index].score; };
+  std::stable_sort(sites.begin(), sites.end(), [&](const Site& a, const Site& b) { return score(a) > score(b); });
+  return sites;
+}
+
 }  // namespace
 
 Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
@@ -250,6 +260,7 @@ Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>&
   builder.run(out);
   rank_cavities(out.pockets);
   rank_cavities(out.voids);
+  out.sites = rank_sites(out);
   const Index level = builder.level();
   for (const alpha::PersistencePair& p : ac.persistence())
     if (p.dim == 1 && p.birth < level && p.death >= level && p.death != alpha::kNever)

@@ -89,6 +89,24 @@ json cavity_list(const PocketRun& run, const std::vector<Cavity>& list, const st
   return out;
 }
 
+// The binding-site ranking: which pocket or void each site is (its rank in
+// that list), with the score and centre repeated for scripts.
+json site_list(const PocketRun& run) {
+  const Cavities& cavities = run.search->cavities;
+  json out = json::array();
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    const Cavity& c = (s.is_void ? cavities.voids : cavities.pockets)[s.index];
+    out.push_back({{"rank", ++rank},
+                   {"kind", s.is_void ? "void" : "pocket"},
+                   {"cavity_rank", s.index + 1},
+                   {"score", score(c.score)},
+                   {"sa_volume", length(c.sa_volume)},
+                   {"center", point(c.center)}});
+  }
+  return out;
+}
+
 json tunnel_list(const PocketRun& run) {
   const std::vector<Atom>& atoms = run.structure->atoms;
   json out = json::array();
@@ -176,6 +194,7 @@ json pocket_report(const PocketRun& run) {
                    {"sa_volume", length(run.search->cavities.sa_volume)},
                    {"pockets", run.search->cavities.pockets.size()},
                    {"voids", run.search->cavities.voids.size()},
+                   {"sites", run.search->cavities.sites.size()},
                    {"tunnels", run.search->cavities.tunnels.size()}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
   return {
@@ -185,6 +204,7 @@ json pocket_report(const PocketRun& run) {
       {"molecule", std::move(molecule)},
       {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
       {"voids", cavity_list(run, run.search->cavities.voids, "void")},
+      {"sites", site_list(run)},
       {"tunnels", tunnel_list(run)},
   };
 }

@@ -49,8 +49,8 @@ case "$case_name" in
     [[ -d 1a26A_pockets ]] || fail "1a26A_pockets/ not created"
     read -r pockets voids tunnels <<<"$(summary_counts)"
     [[ $pockets -ge 1 ]] || fail "no pockets in the summary"
-    grep -q "^rank .*lining residues$" "$tmp/out" || fail "no table in the summary"
-    grep -qE '^ +1 .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for pocket 1"
+    grep -q "^site  cavity .*lining residues$" "$tmp/out" || fail "no table in the summary"
+    grep -qE '^ +1  pocket 1 .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for site 1"
     [[ $(wc -l <"$tmp/out") -le 24 ]] || fail "the summary is longer than one screen"
     expect_consistent 1a26A_pockets "$pockets" "$voids" ply
     grep -qF "/cmd.load(\"$tmp/work/1a26A.pdb\", \"1a26A\")" 1a26A_pockets/pockets.pml ||

@@ -122,6 +122,13 @@ struct Tunnel {
   std::vector<alpha::Index> lining_atoms;  // vertices of the bottleneck triangle, sorted
 };
 
+// A candidate ligand-binding site: a pocket, or a void large enough to
+// hold a drug-sized ligand whole (see Cavities::sites).
+struct Site {
+  bool is_void = false;
+  std::size_t index = 0;  // into Cavities::pockets, or Cavities::voids if is_void
+};
+
 struct Cavities {
   // The whole molecule's solvent-accessible model: area and volume of the
   // union of the probe-inflated balls (the union the cavities' shares are
@@ -131,11 +138,20 @@ struct Cavities {
   std::vector<Cavity> pockets;  // ranked: best first
   std::vector<Cavity> voids;    // ranked: best first
   std::vector<Tunnel> tunnels;  // by decreasing death_alpha_sq (widest bottleneck first)
+  // Where a ligand may bind, best first: every pocket, and every void whose
+  // sa_volume reaches kLigandSiteVolume, in one ranking by score (ties:
+  // pockets first, then each list's order). A ligand in a pocket may
+  // reach out through its mouths, so a pocket of any size can be a site;
+  // an enclosed cavity must hold the whole ligand, and smaller voids are
+  // packing defects and water sites. Holo structures often close a lid over
+  // their ligand, so a site can be a void once the ligand is removed.
+  std::vector<Site> sites;
 };
 
 // Free space (sa_volume, A^3) of the site of a drug-sized ligand of some
 // 20-30 heavy atoms: on pockets-dev, pockets that one ligand fills hold
-// 5-8 A^3 of it per heavy atom (1bzyA, 1e3vA, 1exaA, 5stdA).
+// 5-8 A^3 of it per heavy atom (1bzyA, 1e3vA, 1exaA, 5stdA). The score's
+// volume cap, the size rule's default and the smallest void that is a site.
 inline constexpr double kLigandSiteVolume = 150;
 
 struct CavityOptions {
