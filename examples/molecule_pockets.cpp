@@ -1,5 +1,5 @@
 // The molecule API on a real protein: read a structure, find its cavities,
-// and see where its bound ligand sits among them.
+// and see where its bound ligand sits among the candidate binding sites.
 //
 //   molecule_pockets [STRUCTURE [OUTDIR]]
 //        (defaults: examples/data/1a26A.pdb, and no files written)
@@ -40,24 +40,34 @@ int run(const std::string& file, const std::string& outdir) {
   std::printf("solvent-accessible area %.0f A^2, volume %.0f A^3; %zu pockets, %zu voids, %zu tunnels\n",
               cavities.sa_area, cavities.sa_volume, cavities.pockets.size(), cavities.voids.size(),
               cavities.tunnels.size());
-  for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.pockets.size()); ++i) {
-    const molecule::Cavity& p = cavities.pockets[i];
-    const auto residues = molecule::residues_of(structure.atoms, p.lining_atoms);
-    std::printf("pocket %zu: score %.2f, %zu mouth(s), depth %.1f A, %zu lining residues, first %s\n", i + 1, p.score,
-                p.mouths.size(), p.depth, residues.size(), molecule::residue_id(structure.atoms[residues[0]]).c_str());
+  // The candidate binding sites: every pocket and each void large enough to
+  // hold a drug-sized ligand, in one ranking.
+  const auto cavity_of = [&](const molecule::Site& s) -> const molecule::Cavity& {
+    return (s.is_void ? cavities.voids : cavities.pockets)[s.index];
+  };
+  const auto name_of = [](const molecule::Site& s) {
+    return (s.is_void ? "void " : "pocket ") + std::to_string(s.index + 1);
+  };
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.sites.size()); ++i) {
+    const molecule::Cavity& c = cavity_of(cavities.sites[i]);
+    const auto residues = molecule::residues_of(structure.atoms, c.lining_atoms);
+    std::printf("site %zu (%s): score %.2f, %zu mouth(s), depth %.1f A, %zu lining residues, first %s\n", i + 1,
+                name_of(cavities.sites[i]).c_str(), c.score, c.mouths.size(), c.depth, residues.size(),
+                molecule::residue_id(structure.atoms[residues[0]]).c_str());
   }
 
-  // 3. Each ligand against the pockets: the first pocket (by rank) whose
-  //    centre is within 4 A of a ligand atom (the DCA criterion).
+  // 3. Each ligand against the sites: the first site (by rank) whose centre
+  //    is within 4 A of a ligand atom (the DCA criterion).
   for (const molecule::HeteroGroup& ligand : structure.hetero_groups) {
-    std::size_t hit = 0;
-    for (std::size_t i = 0; i < cavities.pockets.size() && !hit; ++i)
-      for (const molecule::Atom& a : ligand.atoms)
-        if (distance(a.position, cavities.pockets[i].center) <= 4.0) {
-          hit = i + 1;
-          break;
-        }
-    const std::string where = hit ? "in pocket " + std::to_string(hit) : "in no pocket (no centre within 4 A)";
+    std::string where = "in no site (no centre within 4 A)";
+    for (std::size_t i = 0; i < cavities.sites.size(); ++i) {
+      const alpha::Vec3 center = cavity_of(cavities.sites[i]).center;
+      const auto near = [&](const molecule::Atom& a) { return distance(a.position, center) <= 4.0; };
+      if (std::any_of(ligand.atoms.begin(), ligand.atoms.end(), near)) {
+        where = "in site " + std::to_string(i + 1) + " (" + name_of(cavities.sites[i]) + ")";
+        break;
+      }
+    }
     std::printf("ligand %s %s:%d (%zu heavy atoms): %s\n", ligand.residue_name.c_str(), ligand.chain.c_str(),
                 ligand.seq_num, ligand.atoms.size(), where.c_str());
   }
