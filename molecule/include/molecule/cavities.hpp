@@ -71,10 +71,10 @@ struct Cavity {
   // exact when no ball piece crosses the cell's facets).
   double sa_volume = 0;
   double sa_area = 0;  // area of the probe-inflated spheres lining the cavity, A^2 (same split)
-  // The same with the atoms' own (van der Waals) balls: NOT COMPUTED yet
-  // (quiet NaN). The cells are those of the inflated complex; splitting
-  // the van der Waals union over them needs that union's own dual complex,
-  // whose cells differ when radii differ.
+  // The same bounded by the molecular (solvent-excluded) surface instead of
+  // the SA surface: NOT COMPUTED yet (quiet NaN). It needs the Connolly
+  // surface's toroidal and reentrant patches, where reentrant patches of
+  // nearby probe positions intersect (README, `surface`).
   double ms_volume = std::numeric_limits<double>::quiet_NaN();  // A^3
   double ms_area = std::numeric_limits<double>::quiet_NaN();    // A^2
   // Largest distance of a cell centroid from the outside mouths of the
