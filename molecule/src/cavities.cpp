@@ -241,6 +241,7 @@ private:
   }
 };
 
+// Cavities::sites, from the ranked pockets and voids.
 std::vector<Site> rank_sites(const Cavities& cavities) {
   std::vector<Site> sites;
   for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});

@@ -28,6 +28,9 @@
 //
 // TUNNELS are 1-cycles of the complex alive at alpha_sq = 0 that die later.
 //
+// SITES, the candidate ligand-binding sites, rank the pockets and the voids
+// large enough to hold a ligand together (Cavities::sites).
+//
 // Too small to hold the probe: sa_volume is the space the probe's centre
 // can reach in the cavity (points farther than r_i + probe from every atom
 // centre). Cavities whose sa_volume is below CavityOptions::min_volume are
