@@ -279,11 +279,13 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
   }
 }
 
-TEST_CASE("pockets outputs: meshes are closed, oriented outward from the cavity, coloured by rank",
+TEST_CASE("pockets outputs: meshes are closed, oriented outward from the cavity, coloured by site",
           "[pocket_outputs]") {
   const Run& r = the_run();
   const alpha::Triangulation& t = *r.search.triangulation;
-  auto check_list = [&](const std::vector<molecule::Cavity>& list, const std::string& kind) {
+  const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
+  auto check_list = [&](const std::vector<molecule::Cavity>& list, const std::vector<molecule::Rgb>& color,
+                        const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const molecule::Cavity& c = list[i];
       INFO(kind << " " << i + 1);
@@ -294,19 +296,32 @@ TEST_CASE("pockets outputs: meshes are closed, oriented outward from the cavity,
       CHECK(testing::signed_volume(mesh) == Approx(volume).epsilon(1e-4));
       std::size_t mouth_triangles = 0;
       for (const molecule::Mouth& m : c.mouths) mouth_triangles += m.triangles.size();
-      const auto [plain, tinted] = count_colors(mesh, molecule::rank_color(i + 1));
+      const auto [plain, tinted] = count_colors(mesh, color.at(i));
       CHECK(tinted == mouth_triangles);
       CHECK(plain + tinted == mesh.n_faces());
     }
   };
-  check_list(r.search.cavities.pockets, "pocket");
-  check_list(r.search.cavities.voids, "void");
+  check_list(r.search.cavities.pockets, colors.pockets, "pocket");
+  check_list(r.search.cavities.voids, colors.voids, "void");
 
   const ReadMesh molecule_mesh = testing::read_back(r.file("meshes/molecule.ply"), true);
   CHECK(testing::closed_and_consistent(molecule_mesh, false));
   const alpha::AlphaComplex& ac = *r.search.complex;
   CHECK(testing::signed_volume(molecule_mesh) == Approx(ac.volume(ac.level(0))).epsilon(1e-4));
   CHECK(count_colors(molecule_mesh, molecule::kMoleculeColor).first == molecule_mesh.n_faces());
+}
+
+TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other voids", "[pocket_outputs]") {
+  molecule::Cavities cav;
+  cav.pockets.resize(2);
+  cav.voids.resize(3);
+  cav.sites = {{false, 0}, {true, 1}, {false, 1}};  // void 2 is the second site; voids 1 and 3 are no sites
+  const molecule::CavityColors colors = molecule::cavity_colors(cav);
+  using molecule::rank_color;
+  CHECK(colors.pockets == std::vector<molecule::Rgb>{rank_color(1), rank_color(3)});
+  CHECK(colors.voids == std::vector<molecule::Rgb>{rank_color(4), rank_color(2), rank_color(5)});
+  CHECK(rank_color(13) == rank_color(1));  // 12 colours, then again
+  CHECK(rank_color(1) != rank_color(2));
 }
 
 TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the centres", "[pocket_outputs]") {
@@ -330,7 +345,8 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
       centers[name] = {x, y, z};
     }
   }
-  const auto check = [&](const json& list, const std::string& kind) {
+  const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
+  const auto check = [&](const json& list, const std::vector<molecule::Rgb>& color, const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string name = kind + "_" + std::to_string(i + 1);
       INFO(name);
@@ -340,11 +356,13 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
       REQUIRE(centers.count(name + "_center") == 1);
       for (int k = 0; k < 3; ++k)  // both print 3 decimals, rounded on their own
         CHECK(centers[name + "_center"][k] == Approx(list[i]["center"][k].get<double>()).margin(1.1e-3));
-      CHECK(pml.find("set_color ap_" + name + ", [") != std::string::npos);
+      const molecule::Rgb c = color.at(i);
+      CHECK(pml.find("set_color ap_" + name + ", [" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " +
+                     std::to_string(c.b) + "]\n") != std::string::npos);
     }
   };
-  check(r.report["pockets"], "pocket");
-  check(r.report["voids"], "void");
+  check(r.report["pockets"], colors.pockets, "pocket");
+  check(r.report["voids"], colors.voids, "void");
   CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size());
 }
 

@@ -67,12 +67,13 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   const Cavities& cavities = run.search->cavities;
   text_file("pockets.pdb", pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file));
   if (!run.mesh_format.empty()) {
-    const auto meshes = [&](const std::vector<Cavity>& list, const std::string& kind) {
+    const CavityColors colors = cavity_colors(cavities);
+    const auto meshes = [&](const std::vector<Cavity>& list, const std::vector<Rgb>& color, const std::string& kind) {
       for (std::size_t i = 0; i < list.size(); ++i)
-        mesh_file(cavity_mesh_path(kind, i + 1, run.mesh_format), cavity_mesh(ac, list[i], rank_color(i + 1)));
+        mesh_file(cavity_mesh_path(kind, i + 1, run.mesh_format), cavity_mesh(ac, list[i], color[i]));
     };
-    meshes(cavities.pockets, "pocket");
-    meshes(cavities.voids, "void");
+    meshes(cavities.pockets, colors.pockets, "pocket");
+    meshes(cavities.voids, colors.voids, "void");
     mesh_file(molecule_mesh_path(run.mesh_format), molecule_mesh(ac));
   }
   remove_stale_meshes(written);

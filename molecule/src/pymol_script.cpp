@@ -53,11 +53,12 @@ struct Named {
 };
 
 std::vector<Named> named_cavities(const Cavities& cavities) {
+  const CavityColors colors = cavity_colors(cavities);
   std::vector<Named> out;
   for (std::size_t i = 0; i < cavities.pockets.size(); ++i)
-    out.push_back({"pocket_" + std::to_string(i + 1), &cavities.pockets[i], rank_color(i + 1)});
+    out.push_back({"pocket_" + std::to_string(i + 1), &cavities.pockets[i], colors.pockets[i]});
   for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    out.push_back({"void_" + std::to_string(i + 1), &cavities.voids[i], rank_color(i + 1)});
+    out.push_back({"void_" + std::to_string(i + 1), &cavities.voids[i], colors.voids[i]});
   return out;
 }
 

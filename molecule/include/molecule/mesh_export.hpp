@@ -42,6 +42,7 @@ namespace molecule {
 
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb&, const Rgb&) = default;
 };
 
 struct TriangleMesh {

@@ -1,11 +1,16 @@
-// The colour of a pocket or void by its rank, the same in every output
-// (mesh face colours, the PyMOL script): a cycle of 12 colours that stay
-// apart from each other and from the grey of the molecule.
+// The colour of a pocket or void, the same in every output (mesh face
+// colours, the PyMOL script): a cycle of 12 colours that stay apart from
+// each other and from the grey of the molecule, given in the order of the
+// binding sites (Cavities::sites), so that the best site is red whether it
+// is a pocket or a void.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
+#include <vector>
+
+#include "molecule/cavities.hpp"
 #include "molecule/mesh_export.hpp"
 
 namespace molecule {
@@ -30,6 +35,25 @@ inline constexpr Rgb kMoleculeColor{200, 200, 200};
 
 // rank counts from 1.
 inline Rgb rank_color(std::size_t rank) { return kPocketPalette[(rank - 1) % kPocketPalette.size()]; }
+
+// The colour of each pocket and void (indices as in Cavities): rank_color
+// of its site rank, then, for the voids that are not sites, of the ranks
+// that follow, in their list's order.
+struct CavityColors {
+  std::vector<Rgb> pockets, voids;
+};
+inline CavityColors cavity_colors(const Cavities& cavities) {
+  CavityColors out{std::vector<Rgb>(cavities.pockets.size()), std::vector<Rgb>(cavities.voids.size())};
+  std::vector<bool> void_is_site(cavities.voids.size(), false);
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    (s.is_void ? out.voids : out.pockets).at(s.index) = rank_color(++rank);
+    if (s.is_void) void_is_site[s.index] = true;
+  }
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (!void_is_site[i]) out.voids[i] = rank_color(++rank);
+  return out;
+}
 
 // A lighter tint of c (its mix with white, 60% white): mouths of a pocket.
 inline Rgb mouth_tint(Rgb c) {
