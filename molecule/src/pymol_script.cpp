@@ -72,7 +72,7 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   std::string s;
   s += "# alphapocket " + run.version + ": pockets of " + run.file + "\n";
   s += "# Run with `pymol pockets.pml` or, inside PyMOL, `@pockets.pml`. Pockets and voids are\n";
-  s += "# coloured by rank (report.json); pocket_N selects the atoms lining pocket N and\n";
+  s += "# coloured by site rank (report.json sites); pocket_N selects the atoms lining pocket N and\n";
   s += "# pocket_N_center is its centre (void_N, void_N_center likewise).\n";
   s += "/cmd.load(" + python_string(structure_path) + ", \"" + obj + "\")\n";
   s += "hide everything, " + obj + "\n";
