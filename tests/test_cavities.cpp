@@ -144,13 +144,11 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   for (const molecule::Site& site : cav.sites) sites.emplace_back(site.is_void, site.index);
   std::sort(sites.begin(), sites.end());
   CHECK(sites == expected);
-  const auto site_score = [&](const molecule::Site& x) {
-    return (x.is_void ? cav.voids : cav.pockets).at(x.index).score;
-  };
   for (std::size_t k = 1; k < cav.sites.size(); ++k) {
     const molecule::Site &a = cav.sites[k - 1], &b = cav.sites[k];
-    CHECK(site_score(a) >= site_score(b));
-    if (site_score(a) == site_score(b)) CHECK(std::tie(a.is_void, a.index) < std::tie(b.is_void, b.index));
+    CHECK(cav.cavity(a).score >= cav.cavity(b).score);
+    if (cav.cavity(a).score == cav.cavity(b).score)
+      CHECK(std::tie(a.is_void, a.index) < std::tie(b.is_void, b.index));
   }
   for (std::size_t k = 0; k < cav.tunnels.size(); ++k) {
     const auto& tn = cav.tunnels[k];
@@ -343,9 +341,8 @@ TEST_CASE("Cavities: an enclosed ligand site is a void and a site (3stdA)", "[ca
   const molecule::PocketSearch search = molecule::search_pockets(st, molecule::CavityOptions{});
   const Cavities& cav = search.cavities;
   REQUIRE(!cav.sites.empty());
-  const molecule::Site best = cav.sites.front();
-  REQUIRE(best.is_void);
-  const Cavity& site = cav.voids.at(best.index);
+  REQUIRE(cav.sites.front().is_void);
+  const Cavity& site = cav.cavity(cav.sites.front());
   CHECK(site.sa_volume >= molecule::kLigandSiteVolume);
   double nearest = std::numeric_limits<double>::infinity();
   for (const molecule::Atom& a : ligand->atoms) nearest = std::min(nearest, alpha::norm(a.position - site.center));

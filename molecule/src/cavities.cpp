@@ -247,8 +247,9 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
   for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});
   for (std::size_t i = 0; i < cavities.voids.size(); ++i)
     if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i});
-  const auto score = [&](const Site& s) { return (s.is_void ? cavities.voids : cavities.pockets)[s.index].score; };
-  std::stable_sort(sites.begin(), sites.end(), [&](const Site& a, const Site& b) { return score(a) > score(b); });
+  std::stable_sort(sites.begin(), sites.end(), [&](const Site& a, const Site& b) {
+    return cavities.cavity(a).score > cavities.cavity(b).score;
+  });
   return sites;
 }
 

@@ -96,7 +96,7 @@ json site_list(const PocketRun& run) {
   json out = json::array();
   std::size_t rank = 0;
   for (const Site& s : cavities.sites) {
-    const Cavity& c = (s.is_void ? cavities.voids : cavities.pockets)[s.index];
+    const Cavity& c = cavities.cavity(s);
     out.push_back({{"rank", ++rank},
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},

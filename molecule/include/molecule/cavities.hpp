@@ -149,6 +149,8 @@ struct Cavities {
   // packing defects and water sites. Holo structures often close a lid over
   // their ligand, so a site can be a void once the ligand is removed.
   std::vector<Site> sites;
+
+  const Cavity& cavity(const Site& site) const { return (site.is_void ? voids : pockets).at(site.index); }
 };
 
 // Free space (sa_volume, A^3) of the site of a drug-sized ligand of some

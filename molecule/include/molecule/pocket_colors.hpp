@@ -7,7 +7,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-
 #include <vector>
 
 #include "molecule/cavities.hpp"
