@@ -79,10 +79,7 @@ std::vector<Vec3> fibonacci_sphere(int n, double R) {
 
 double tetra_volume(const alpha::Triangulation& t, Index c) {
   const auto& v = t.cell(c).v;
-  const Vec3 &a = t.point(v[0]), &b = t.point(v[1]), &d = t.point(v[2]), &e = t.point(v[3]);
-  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = d.x - a.x, vy = d.y - a.y, vz = d.z - a.z,
-               wx = e.x - a.x, wy = e.y - a.y, wz = e.z - a.z;
-  return std::fabs(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6;
+  return alpha::tetrahedron_volume(t.point(v[0]), t.point(v[1]), t.point(v[2]), t.point(v[3]));
 }
 
 // Properties every result must have, whatever the input.

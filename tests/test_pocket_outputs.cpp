@@ -86,11 +86,7 @@ double cells_volume(const alpha::Triangulation& t, const std::vector<alpha::Inde
   double v = 0;
   for (const alpha::Index c : cells) {
     const auto& cv = t.cell(c).v;
-    const alpha::Vec3 &a = t.point(cv[0]), &b = t.point(cv[1]), &d = t.point(cv[2]), &e = t.point(cv[3]);
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double vx = d.x - a.x, vy = d.y - a.y, vz = d.z - a.z;
-    const double wx = e.x - a.x, wy = e.y - a.y, wz = e.z - a.z;
-    v += std::fabs(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6;
+    v += alpha::tetrahedron_volume(t.point(cv[0]), t.point(cv[1]), t.point(cv[2]), t.point(cv[3]));
   }
   return v;
 }

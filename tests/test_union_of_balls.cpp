@@ -274,10 +274,6 @@ BallSet random_balls(std::size_t n, std::uint64_t seed, double box, double rmin,
   return s;
 }
 
-double tetra_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return std::fabs(dot(b - a, cross(c - a, d - a))) / 6;
-}
-
 }  // namespace
 
 TEST_CASE("union of balls: one ball, and balls of radius 0", "[union]") {
@@ -531,7 +527,7 @@ TEST_CASE("union of balls: the cells of a void share exactly its covered part", 
     std::vector<double> cumulative;
     for (Index c : cells) {
       const auto& v = t.cell(c).v;
-      const double vc = tetra_volume(t.point(v[0]), t.point(v[1]), t.point(v[2]), t.point(v[3]));
+      const double vc = alpha::tetrahedron_volume(t.point(v[0]), t.point(v[1]), t.point(v[2]), t.point(v[3]));
       const double sc = un.u->cell_cover(c).volume;
       single_cell_excess += sc > vc;
       volume += vc, share += sc;
@@ -571,7 +567,7 @@ TEST_CASE("union of balls: a cell's share is its covered part when the pieces st
   // other facets. With radius 0.62 the balls cover the whole tetrahedron,
   // which is then in K.
   const std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}, {0.5, std::sqrt(3.0) / 6, std::sqrt(2.0 / 3)}};
-  const double vol = tetra_volume(p[0], p[1], p[2], p[3]);
+  const double vol = alpha::tetrahedron_volume(p[0], p[1], p[2], p[3]);
   auto finite_cell = [](const Triangulation& t) {
     for (Index c = 0; c < t.num_cells(); ++c)
       if (!t.is_infinite(c)) return c;
