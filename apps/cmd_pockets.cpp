@@ -88,15 +88,22 @@ std::string residue_list(const std::vector<molecule::Atom>& atoms, const molecul
   return out;
 }
 
+// "13 pockets, 1 void, 6 tunnels".
+std::string cavity_counts(const molecule::Cavities& cavities) {
+  const auto count = [](std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  return count(cavities.pockets.size(), "pocket") + ", " + count(cavities.voids.size(), "void") + ", " +
+         count(cavities.tunnels.size(), "tunnel");
+}
+
 void print_summary(const PocketsOptions& opt, const std::string& outdir, const molecule::Structure& structure,
                    const molecule::Cavities& cavities) {
   const auto& sites = cavities.sites;
   std::printf("%s: %s\n", opt.input.file.c_str(), molecule::summary(structure.report).c_str());
   std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
               cavities.sa_area, cavities.sa_volume);
-  std::printf("%zu pocket%s, %zu void%s, %zu tunnel%s; written to %s/\n", cavities.pockets.size(),
-              cavities.pockets.size() == 1 ? "" : "s", cavities.voids.size(), cavities.voids.size() == 1 ? "" : "s",
-              cavities.tunnels.size(), cavities.tunnels.size() == 1 ? "" : "s", outdir.c_str());
+  std::printf("%s; written to %s/\n", cavity_counts(cavities).c_str(), outdir.c_str());
   if (sites.empty()) return;
   std::printf("\nsite  cavity       score  SA vol A^3  depth A  mouths  lining residues\n");
   const std::size_t prefix = 55;  // columns before the residues
@@ -136,8 +143,7 @@ int run_pockets(const PocketsOptions& opt) {
   const molecule::Cavities& cavities = search.cavities;
   spdlog::info("regular triangulation and alpha complex: {:.3f} s, {} atoms, {} finite cells", search.complex_seconds,
                structure.atoms.size(), search.triangulation->num_finite_cells());
-  spdlog::info("cavities: {:.3f} s, {} pockets, {} voids, {} tunnels", search.cavities_seconds,
-               cavities.pockets.size(), cavities.voids.size(), cavities.tunnels.size());
+  spdlog::info("cavities: {:.3f} s, {}", search.cavities_seconds, cavity_counts(cavities));
 
   molecule::PocketRun run;
   run.file = file;

@@ -108,6 +108,7 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     CHECK(c.sa_area >= 0);
     CHECK(c.max_alpha_sq > 0);
     CHECK(c.fill_alpha_sq == c.max_alpha_sq);
+    CHECK(c.max_probe_radius >= b.probe);  // empty at alpha_sq = 0: the probe fits
     CHECK(c.close_alpha_sq <= c.fill_alpha_sq);
     CHECK((pocket ? c.close_alpha_sq > 0 : c.close_alpha_sq <= 0));
     CHECK(c.mouths.empty() == !pocket);
@@ -183,6 +184,7 @@ TEST_CASE("Cavities: a hollow shell of balls holds exactly one void", "[cavities
   // The inner cells share (up to rounding) the sphere centred at the
   // origin, orthogonal to every inflated ball: size R^2 - rho^2.
   CHECK(v.fill_alpha_sq == Approx(R * R - rho * rho).epsilon(1e-9));
+  CHECK(v.max_probe_radius == Approx(R - r).epsilon(1e-9));  // a probe at the origin touches every atom
   CHECK(std::hypot(v.center.x, v.center.y, v.center.z) < 0.05 * R);
   // Its free volume against a midpoint-rule integration of the ball of
   // radius R minus the inflated balls.
@@ -274,6 +276,7 @@ TEST_CASE("Cavities: a grid of balls has one void per cube, with analytic spectr
   for (const Cavity& v : cav.voids) {
     CHECK(v.fill_alpha_sq == 0.75 - 0.5625);
     CHECK(v.close_alpha_sq == 0.5 - 0.5625);
+    CHECK(v.max_probe_radius == Approx(std::sqrt(0.75) - 0.5).epsilon(1e-12));  // to a cube's corners
     CHECK(v.sa_volume == Approx(free_volume).epsilon(0.01));
     CHECK(v.lining_atoms.size() == 8);
     // The centre of a cube.

@@ -123,7 +123,7 @@ void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavit
     INFO(kind << " " << i + 1);
     CHECK(p["rank"] == i + 1);
     for (const char* key : {"score", "sa_volume", "sa_area", "mouth_area", "buriedness", "burial_atoms", "depth",
-                            "tetrahedra"})
+                            "tetrahedra", "max_probe_radius"})
       check_number(p, key);
     for (const char* key : {"ms_volume", "ms_area"})  // null: not computed
       if (!p.at(key).is_null()) check_number(p, key);
@@ -132,6 +132,7 @@ void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavit
     if (i > 0) CHECK(p["score"].get<double>() <= list[i - 1]["score"].get<double>());
     CHECK(p["tetrahedra"] == cavities[i].cells.size());
     CHECK(p["fill_alpha_sq"].get<double>() > 0);  // empty at alpha_sq = 0
+    CHECK(p["max_probe_radius"].get<double>() == Approx(cavities[i].max_probe_radius).margin(5e-4));
     REQUIRE(p["mouths"].is_number_unsigned());
     REQUIRE(p["mouth_areas"].is_array());
     CHECK(p["mouths"] == p["mouth_areas"].size());

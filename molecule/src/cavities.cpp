@@ -81,6 +81,17 @@ std::vector<Mouth> group_mouths(const alpha::Simplices& s, const std::vector<Ope
   return mouths;
 }
 
+// The radius of the largest probe at a place where the balls of `atoms`,
+// grown to sqrt((r_i + probe)^2 + alpha_sq), just meet (see
+// Tunnel::bottleneck_radius): min over them of sqrt((r_i + probe)^2 +
+// alpha_sq) - r_i.
+template <class Atoms>
+double probe_radius(const Atoms& atoms, const std::vector<double>& radii, double probe, double alpha_sq) {
+  double radius = std::numeric_limits<double>::infinity();
+  for (Index i : atoms) radius = std::min(radius, std::sqrt(ball_weight(radii[i], probe) + alpha_sq) - radii[i]);
+  return radius;
+}
+
 // A 1-cycle alive at the level, as a tunnel (see Tunnel::bottleneck_radius).
 Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& p, const std::vector<double>& radii,
                    double probe) {
@@ -89,11 +100,7 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
   tn.death_alpha_sq = ac.spectrum_value(p.death);
   tn.bottleneck_triangle = p.death_simplex;
   const auto& tri = ac.simplices().triangle(p.death_simplex);
-  tn.bottleneck_radius = std::numeric_limits<double>::infinity();
-  for (Index i : tri) {
-    const double grown_sq = ball_weight(radii[i], probe) + tn.death_alpha_sq;
-    tn.bottleneck_radius = std::min(tn.bottleneck_radius, std::sqrt(grown_sq) - radii[i]);
-  }
+  tn.bottleneck_radius = probe_radius(tri, radii, probe, tn.death_alpha_sq);
   tn.lining_atoms.assign(tri.begin(), tri.end());
   std::sort(tn.lining_atoms.begin(), tn.lining_atoms.end());
   return tn;
@@ -102,8 +109,8 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
 // Everything find_cavities shares between the cavities of one complex.
 class CavityBuilder {
 public:
-  CavityBuilder(const alpha::AlphaComplex& ac, const CavityOptions& options)
-      : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), options_(options), level_(ac.level(0.0)),
+  CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
+      : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         flow_(ac, level_), space_(ac), cavity_of_(t_.num_cells(), alpha::kNone),
         pair_of_cell_(t_.num_cells(), alpha::kNone) {
     // The dimension-2 pair killed by each cell.
@@ -152,6 +159,7 @@ private:
   const alpha::AlphaComplex& ac_;
   const alpha::Triangulation& t_;
   const alpha::Simplices& s_;
+  const std::vector<double>& radii_;
   const CavityOptions& options_;
   Index level_;
   alpha::DiscreteFlow flow_;
@@ -212,6 +220,7 @@ private:
 
     cav.max_alpha_sq = ac_.spectrum_value(ac_.cell_entry(last));
     cav.fill_alpha_sq = cav.max_alpha_sq;
+    cav.max_probe_radius = probe_radius(t_.cell(last).v, radii_, options_.probe, cav.max_alpha_sq);
     const Index p = pair_of_cell_[last];
     cav.close_alpha_sq = p == alpha::kNone ? cav.fill_alpha_sq : ac_.spectrum_value(ac_.persistence()[p].birth);
 
@@ -257,7 +266,7 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
 
 Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
   check_input(ac, radii, options);
-  CavityBuilder builder(ac, options);
+  CavityBuilder builder(ac, radii, options);
   Cavities out;
   builder.run(out);
   rank_cavities(out.pockets);

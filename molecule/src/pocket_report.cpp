@@ -74,6 +74,7 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
       {"center", point(c.center)},
       {"tetrahedra", c.cells.size()},
       {"max_alpha_sq", c.max_alpha_sq},
+      {"max_probe_radius", length(c.max_probe_radius)},
       {"close_alpha_sq", c.close_alpha_sq},
       {"fill_alpha_sq", c.fill_alpha_sq},
       {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},

@@ -91,6 +91,10 @@ struct Cavity {
   // Squared radius of the largest probe the cavity can hold: the largest
   // orthosphere size among its cells (alpha_sq of the cell that fills last).
   double max_alpha_sq = 0;
+  // The same as a radius, A: the largest probe at the orthocentre of the
+  // cell that fills last, computed as Tunnel::bottleneck_radius from its
+  // four atoms (exact for equal radii, a lower bound otherwise); >= probe.
+  double max_probe_radius = 0;
   // The cavity on the spectrum (from the dimension-2 persistence pair whose
   // killing cell is the cavity's last cell to fill): it is a closed void
   // for close_alpha_sq <= alpha_sq < fill_alpha_sq. A void has
