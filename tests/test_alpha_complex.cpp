@@ -42,6 +42,40 @@ void check_level(const AlphaComplex& a, Index level) {
   CHECK(chi == long(b[0]) - long(b[1]) + long(b[2]));
 }
 
+// (rank, simplex) of every simplex entering at its own size, by rank.
+std::vector<std::pair<Index, Simplex>> ranked_entries(const Triangulation& t, const AlphaComplex& a) {
+  std::vector<std::pair<Index, Simplex>> entries;
+  const Simplices& s = a.simplices();
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (!t.is_infinite(c)) entries.emplace_back(a.cell_entry(c), Simplex(t.cell(c).v[0], t.cell(c).v[1], t.cell(c).v[2], t.cell(c).v[3]));
+  for (Index f = 0; f < s.num_triangles(); ++f)
+    if (!a.triangle_interval(f).attached)
+      entries.emplace_back(a.triangle_interval(f).entry, Simplex(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]));
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (!a.edge_interval(e).attached) entries.emplace_back(a.edge_interval(e).entry, Simplex(s.edge(e)[0], s.edge(e)[1]));
+  for (Index v = 0; v < t.num_points(); ++v)
+    if (t.status(v) == PointStatus::vertex && !a.vertex_interval(v).attached)
+      entries.emplace_back(a.vertex_interval(v).entry, Simplex(v));
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  return entries;
+}
+
+// Consecutive entries whose ranks disagree with their exact sizes (equal
+// ranks for different sizes, or increasing ranks for sizes not
+// increasing); `ties` counts the pairs of equal rank.
+std::size_t misordered(const Triangulation& t, const std::vector<std::pair<Index, Simplex>>& entries,
+                       std::size_t& ties) {
+  SizeKernel exact(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
+  std::size_t wrong = 0;
+  for (std::size_t k = 1; k < entries.size(); ++k) {
+    const int c = sgn(exact.exact_size(entries[k - 1].second) - exact.exact_size(entries[k].second));
+    const bool same_rank = entries[k - 1].first == entries[k].first;
+    wrong += same_rank ? c != 0 : c >= 0;
+    ties += same_rank;
+  }
+  return wrong;
+}
+
 }  // namespace
 
 TEST_CASE("Regular tetrahedron: known sizes and classification", "[alpha]") {
@@ -165,27 +199,52 @@ TEST_CASE("Translated copies: long runs of near-equal sizes ranked exactly", "[a
       pts.push_back({base[i].x + 3.1 * k, base[i].y + 0.7 * k, base[i].z}), w.push_back(base_w[i]);
   const Triangulation t(pts, w);
   const AlphaComplex a(t);
-  SizeKernel exact(t.points().data(), t.weights().data());
-  // (rank, simplex) of every simplex entering at its own size.
-  std::vector<std::pair<Index, Simplex>> entries;
-  const Simplices& s = a.simplices();
-  for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) entries.emplace_back(a.cell_entry(c), Simplex(t.cell(c).v[0], t.cell(c).v[1], t.cell(c).v[2], t.cell(c).v[3]));
-  for (Index f = 0; f < s.num_triangles(); ++f)
-    if (!a.triangle_interval(f).attached)
-      entries.emplace_back(a.triangle_interval(f).entry, Simplex(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]));
-  for (Index e = 0; e < s.num_edges(); ++e)
-    if (!a.edge_interval(e).attached) entries.emplace_back(a.edge_interval(e).entry, Simplex(s.edge(e)[0], s.edge(e)[1]));
-  std::stable_sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::size_t wrong = 0, ties = 0;
-  for (std::size_t k = 1; k < entries.size(); ++k) {
-    const int c = sgn(exact.exact_size(entries[k - 1].second) - exact.exact_size(entries[k].second));
-    const bool same_rank = entries[k - 1].first == entries[k].first;
-    wrong += same_rank ? c != 0 : c >= 0;
-    ties += same_rank;
-  }
-  CHECK(wrong == 0);
+  std::size_t ties = 0;
+  const auto entries = ranked_entries(t, a);
+  CHECK(misordered(t, entries, ties) == 0);
   CHECK(ties > 0);
+  SizeKernel exact(t.points().data(), t.weights().data());
   for (std::size_t k = 0; k < entries.size(); k += 97)
     CHECK(a.spectrum_value(entries[k].first) == exact.rounded_size(entries[k].second));
+}
+
+TEST_CASE("A sliver's imprecise size is ranked exactly among precise ones", "[alpha][degenerate]") {
+  // A nearly flat tetrahedron (its filtered size ~2000 ulps above the
+  // exact one, with a wide error bound) and two far edges whose sizes lie
+  // just above and just below that: sorted by value alone, the sliver's
+  // interval reached back across an interval already closed, and the edge
+  // of larger size was ranked first.
+  const std::vector<Vec3> pts = {{-0.76859044977057356, 0.63974113555520828, -1.7357512548090528e-05},
+                                 {-0.60085408362482773, -0.79935872434806676, -1.921500346124842e-05},
+                                 {0.6401426774751493, 0.76825604616881926, 1.1413511825205039e-05},
+                                 {-0.13155001838175856, -0.99130953423426682, -1.0652141302078966e-05},
+                                 {0, 0, 1000},
+                                 {2.0000004023914655, 0, 1000},
+                                 {0, 0, -1000},
+                                 {0, 2.0000004023915987, -1000}};
+  const Triangulation t(pts);
+  const AlphaComplex a(t);
+  std::size_t ties = 0;
+  CHECK(misordered(t, ranked_entries(t, a), ties) == 0);
+  // At an alpha between the sliver's size and the near edge's, the edge
+  // is absent: five components.
+  const Index level = a.level(1.0000004023913729);
+  CHECK(a.betti(level)[0] == 5);
+  check_level(a, level);
+
+  // The same with weights: two far points whose negative weights put
+  // their sizes two and four ulps above the sliver's exact size.
+  std::vector<Vec3> wp = {{0.15038448672194007, 0.5864153099179068, 0.94616932282758803},
+                          {0.32493886338758476, 0.59709837036983482, 0.14722445530130315},
+                          {0.71059105019631019, 0.57733749302056236, 0.79450413894879346},
+                          {0.76007816161368758, 0.59468159239424534, 0.35725968031022043}};
+  const double r = SizeKernel(wp.data(), nullptr).rounded_size(Simplex(0, 1, 2, 3));
+  const double x1 = std::nextafter(std::nextafter(r, 100.0), 100.0);
+  const double x2 = std::nextafter(std::nextafter(x1, 100.0), 100.0);
+  wp.push_back({1000, 0, 0});
+  wp.push_back({0, 1000, 0});
+  const Triangulation tw(wp, {0, 0, 0, 0, -x1, -x2});
+  const AlphaComplex aw(tw);
+  ties = 0;
+  CHECK(misordered(tw, ranked_entries(tw, aw), ties) == 0);
 }

@@ -117,9 +117,12 @@ void AlphaComplex::rank_critical() {
 
   // The critical values are the sizes of the finite cells and of the
   // unattached faces (an attached face enters with a coface, and mu_low,
-  // mu_high are entries of cofaces). Sorted by their double values (in
-  // global id order among equal ones), then exactly within each run of
-  // overlapping error intervals; the error is kept as a float rounded up.
+  // mu_high are entries of cofaces). Sorted by the lower ends of their
+  // error intervals (in global id order among equal ones), then exactly
+  // within each run of overlapping intervals; the error is kept as a float
+  // rounded up. By lower ends, not values: then no later interval can
+  // reach back into a run already closed (one with a large error could,
+  // sorted by value).
   struct Critical {
     double value;
     float error;
@@ -151,10 +154,19 @@ void AlphaComplex::rank_critical() {
     if (!triangle_attached_[f]) add(ids_.triangles + f);
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) add(ids_.cells + c);
+  // The interval's ends; an unbounded error (inf - inf) reaches everywhere.
+  const auto low = [](const Critical& c) {
+    const double x = c.value - double(c.error);
+    return std::isnan(x) ? -HUGE_VAL : x;
+  };
+  const auto high = [](const Critical& c) {
+    const double x = c.value + double(c.error);
+    return std::isnan(x) ? HUGE_VAL : x;
+  };
   // Doubles ordered as unsigned integers: flip all bits of negatives, the
   // sign bit of the others.
-  radix_sort(order, [](const Critical& c) {
-    const auto bits = std::bit_cast<std::uint64_t>(c.value);
+  radix_sort(order, [&](const Critical& c) {
+    const auto bits = std::bit_cast<std::uint64_t>(low(c) + 0.0);  // + 0.0: -0 sorts as 0
     return bits ^ (bits >> 63 ? ~std::uint64_t(0) : std::uint64_t(1) << 63);
   });
   std::uint64_t filtered_compares = 0;
@@ -216,10 +228,8 @@ void AlphaComplex::rank_critical() {
   reserve_huge(spectrum_, order.size());
   for (std::size_t b = 0; b < order.size();) {
     std::size_t e = b + 1;
-    double reach = order[b].value + order[b].error;
-    // !(lo > reach): an unbounded error (inf - inf) overlaps everything.
-    while (e < order.size() && !(order[e].value - order[e].error > reach))
-      reach = std::max(reach, order[e].value + double(order[e].error)), ++e;
+    double reach = high(order[b]);
+    while (e < order.size() && low(order[e]) <= reach) reach = std::max(reach, high(order[e])), ++e;
     if (e - b >= kLongRun) {
       sort_long_run(b, e);
       b = e;
