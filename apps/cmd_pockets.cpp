@@ -156,6 +156,7 @@ int run_pockets(const PocketsOptions& opt) {
   Stopwatch write_time;
   const nlohmann::ordered_json report = molecule::pocket_report(run);
   const std::vector<std::string> written = out.write(run, report, absolute_path(file));
+  for (const std::string& warning : out.warnings()) spdlog::warn("{}", warning);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 

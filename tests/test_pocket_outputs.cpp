@@ -546,3 +546,50 @@ TEST_CASE("pockets outputs: meshes of an earlier run are replaced, other files k
     files += e.is_regular_file();
   CHECK(files == written.size() + 2);
 }
+
+TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was", "[pocket_outputs]") {
+  const Run& r = the_run();
+  TempDir dir;
+  molecule::PocketOutputDir out((dir / "out").string());
+  out.write(r.run, kStructure);
+  // The last file to be made cannot be written: a directory of its name.
+  fs::remove(dir / "out/meshes/molecule.ply");
+  fs::create_directory(dir / "out/meshes/molecule.ply");
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
+    if (e.is_regular_file()) before[e.path().string()] = testing::read_text(e.path());
+  molecule::PocketRun other = r.run;
+  other.version = "other";
+  CHECK_THROWS_WITH(out.write(other, kStructure), Catch::Contains("molecule.ply: is a directory"));
+  std::map<std::string, std::string> after;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
+    if (e.is_regular_file()) after[e.path().string()] = testing::read_text(e.path());
+  CHECK(after == before);  // no file of the new run, no temporary file left
+}
+
+TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot hold", "[pocket_outputs]") {
+  const Run& r = the_run();
+  // The same molecule 20000 A away: every centre is beyond the columns.
+  molecule::Structure far = r.structure;
+  for (molecule::Atom& a : far.atoms) a.position.x += 20000;
+  const molecule::PocketSearch search = molecule::search_pockets(far, {});
+  molecule::PocketRun run = r.run;
+  run.structure = &far;
+  run.search = &search;
+  TempDir dir;
+  molecule::PocketOutputDir out((dir / "out").string());
+  out.write(run, kStructure);
+  const std::string text = testing::read_text(dir / "out/pockets.pdb");
+  const std::size_t cavities = search.cavities.pockets.size() + search.cavities.voids.size();
+  REQUIRE(cavities > 0);
+  CHECK(text.find("HETATM") == std::string::npos);
+  CHECK(text.find("pseudo-atoms left out") != std::string::npos);
+  REQUIRE(out.warnings().size() == 1);
+  CHECK(out.warnings()[0].find("pockets.pdb: ") == 0);
+  // Everything else is written as usual.
+  CHECK(json::parse(testing::read_text(dir / "out/report.json"))["pockets"].size() == search.cavities.pockets.size());
+  // A normal run has no warning.
+  molecule::PocketOutputDir near((dir / "near").string());
+  near.write(r.run, kStructure);
+  CHECK(near.warnings().empty());
+}

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -73,18 +74,23 @@ void TemporaryFile::commit() {
   path_.clear();
 }
 
-void write_file_atomically(const std::string& path, std::string_view content) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
-  TemporaryFile tmp(path);
-  {
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::deque<TemporaryFile> staged;  // never moved: a deque does not relocate
+  for (const auto& [path, content] : files) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
+    const TemporaryFile& tmp = staged.emplace_back(path);
     std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
     if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
     out.write(content.data(), std::streamsize(content.size()));
     out.close();
     if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
   }
-  tmp.commit();
+  for (TemporaryFile& tmp : staged) tmp.commit();
+}
+
+void write_file_atomically(const std::string& path, std::string_view content) {
+  write_files_atomically({{path, std::string(content)}});
 }
 
 }  // namespace molecule

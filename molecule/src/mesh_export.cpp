@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <mutex>
 #include <numeric>
+#include <sstream>
 #include <system_error>
 #include <tuple>
 
@@ -203,34 +202,37 @@ void check_mesh_file_name(const std::string& path) {
   check_can_create(path);
 }
 
-MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {
+std::string mesh_file_content(const std::string& path, const TriangleMesh& mesh, MeshFileInfo* info) {
   const Format* format = checked_format(path);
-
-  MeshFileInfo info;
-  info.format = format->name;
-  info.binary = format->binary;
-  info.colors = format->colors && !mesh.face_colors.empty();
+  MeshFileInfo local;
+  MeshFileInfo& out_info = info ? *info : local;
+  out_info = {};
+  out_info.format = format->name;
+  out_info.binary = format->binary;
+  out_info.colors = format->colors && !mesh.face_colors.empty();
 
   check_input(path, mesh);
-  QuietOpenMesh quiet;
-  const Mesh om = build_mesh(path, mesh, info.colors, info);
-
-  TemporaryFile tmp(path);
+  std::ostringstream out(std::ios::binary);
   {
-    std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-    if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
+    // OpenMesh's writers and log streams are process-wide: one thread at a time.
+    static std::mutex openmesh;
+    const std::scoped_lock lock(openmesh);
+    const QuietOpenMesh quiet;
+    const Mesh om = build_mesh(path, mesh, out_info.colors, out_info);
     OpenMesh::IO::Options options;
     if (format->binary) options += OpenMesh::IO::Options::Binary;
     if (format->binary) options += OpenMesh::IO::Options::LSB;
-    if (info.colors) options += OpenMesh::IO::Options::FaceColor;
-    const bool written =
-        OpenMesh::IO::write_mesh(om, out, std::string(".") + format->name, options, kAsciiPrecision);
-    out.flush();
-    if (!written || !out) alpha::fail(path + ": write error (" + format->name + ")");
-    out.close();
-    if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
+    if (out_info.colors) options += OpenMesh::IO::Options::FaceColor;
+    if (!OpenMesh::IO::write_mesh(om, out, std::string(".") + format->name, options, kAsciiPrecision) || !out)
+      alpha::fail(path + ": write error (" + format->name + ")");
   }
-  tmp.commit();
+  return std::move(out).str();
+}
+
+MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {
+  MeshFileInfo info;
+  const std::string content = mesh_file_content(path, mesh, &info);
+  write_file_atomically(path, content);
   return info;
 }
 

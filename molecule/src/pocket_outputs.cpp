@@ -49,24 +49,24 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const std:
 
 std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nlohmann::ordered_json& report,
                                                 const std::string& structure_path) {
-  std::vector<std::string> written;
-  const auto text_file = [&](const std::string& name, const std::string& content) {
-    write_file_atomically((path_ / name).string(), content);
-    written_ = true;
-    written.push_back(name);
-  };
-  const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
-    write_mesh_file((path_ / name).string(), mesh);
-    written.push_back(name);
-  };
-
-  text_file("report.json", report.dump(2) + "\n");
-  text_file("pockets.csv", pockets_csv(run));
-  text_file("pockets.pml", pymol_script(run, structure_path));
+  // Every file is made in memory first, so that a failure (a mesh OpenMesh
+  // refuses, a full disk) leaves the directory as it was.
+  std::vector<std::pair<std::string, std::string>> files;  // (name, content)
+  warnings_.clear();
+  files.emplace_back("report.json", report.dump(2) + "\n");
+  files.emplace_back("pockets.csv", pockets_csv(run));
+  files.emplace_back("pockets.pml", pymol_script(run, structure_path));
   const alpha::AlphaComplex& ac = *run.search->complex;
   const Cavities& cavities = run.search->cavities;
-  text_file("pockets.pdb", pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file));
+  PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file);
+  if (pdb.left_out > 0)
+    warnings_.push_back("pockets.pdb: " + std::to_string(pdb.left_out) +
+                        " pseudo-atoms left out, beyond the PDB columns' range (report.json has every cavity)");
+  files.emplace_back("pockets.pdb", std::move(pdb.text));
   if (!run.mesh_format.empty()) {
+    const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
+      files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh));
+    };
     const CavityColors colors = cavity_colors(cavities);
     const auto meshes = [&](const std::vector<Cavity>& list, const std::vector<Rgb>& color, const std::string& kind) {
       for (std::size_t i = 0; i < list.size(); ++i)
@@ -76,6 +76,14 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     meshes(cavities.voids, colors.voids, "void");
     mesh_file(molecule_mesh_path(run.mesh_format), molecule_mesh(ac));
   }
+
+  std::vector<std::string> written;
+  for (auto& [name, content] : files) {
+    written.push_back(name);
+    name = (path_ / name).string();
+  }
+  write_files_atomically(files);
+  written_ = true;
   remove_stale_meshes(written);
   return written;
 }

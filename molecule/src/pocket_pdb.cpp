@@ -1,54 +1,57 @@
 #include "molecule/pocket_pdb.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string_view>
 
-#include "alpha/error.hpp"
 #include "alpha/sizes.hpp"
 
 namespace molecule {
 namespace {
 
-class PdbWriter {
+void remark(std::string& out, std::string_view text) {
+  out += "REMARK   1 ";
+  out += text.substr(0, 69);  // the record is 80 columns wide
+  out += '\n';
+}
+
+// HETATM records, leaving out (and counting) those the fixed columns cannot
+// hold: serials above 99999, residue numbers above 9999, coordinates
+// outside -999.999 .. 9999.999.
+class HetatmWriter {
 public:
-  explicit PdbWriter(std::string& out) : out_(out) {}
-
-  void remark(std::string_view text) {
-    out_ += "REMARK   1 ";
-    out_ += text.substr(0, 69);  // the record is 80 columns wide
-    out_ += '\n';
-  }
-
   void hetatm(const char* name, char chain, std::size_t rank, const alpha::Vec3& p, double b) {
-    if (++serial_ > 99999) alpha::fail("more than 99999 pseudo-atoms do not fit the PDB format");
-    if (rank > 9999) alpha::fail("more than 9999 cavities do not fit the PDB format");
-    for (double x : {p.x, p.y, p.z})
-      if (!(std::abs(x) < 9999.9995) || x <= -999.9995)
-        alpha::fail("coordinate " + std::to_string(x) + " does not fit the PDB format");
+    bool fits = serial_ < 99999 && rank <= 9999;
+    for (double x : {p.x, p.y, p.z}) fits = fits && std::abs(x) < 9999.9995 && x > -999.9995;  // NaN does not
+    if (!fits) {
+      ++left_out_;
+      return;
+    }
+    // (Checked above; GCC cannot follow the check through to the format.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-truncation"
     char line[96];
     std::snprintf(line, sizeof line, "HETATM%5zu %-4s STP %c%4zu    %8.3f%8.3f%8.3f%6.2f%6.2f           C  \n",
-                  serial_, name, chain, rank, p.x, p.y, p.z, 1.0, std::fmin(b, 999.99));
-    out_ += line;
+                  ++serial_, name, chain, rank, p.x, p.y, p.z, 1.0, std::clamp(b, 0.0, 999.99));
+#pragma GCC diagnostic pop
+    records_ += line;
   }
+  const std::string& records() const { return records_; }
+  std::size_t left_out() const { return left_out_; }
 
 private:
-  std::string& out_;
-  std::size_t serial_ = 0;
+  std::string records_;
+  std::size_t serial_ = 0, left_out_ = 0;
 };
 
 }  // namespace
 
-std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
+PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
   const alpha::Triangulation& t = ac.triangulation();
   const alpha::SizeKernel sizes(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
 
-  std::string out;
-  PdbWriter pdb(out);
-  pdb.remark(title);
-  pdb.remark("cavities as pseudo-atoms: residue STP, residue number = rank,");
-  pdb.remark("chain P = pockets, chain V = voids; atom CEN = cavity centre,");
-  pdb.remark("atom SNK = orthocentre of a sink tetrahedron (B = its radius, A)");
+  HetatmWriter pdb;
   const auto write = [&](const std::vector<Cavity>& list, char chain) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const Cavity& cavity = list[i];
@@ -62,7 +65,17 @@ std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, 
   };
   write(cavities.pockets, 'P');
   write(cavities.voids, 'V');
-  out += "END\n";
+
+  PocketPdb out;
+  out.left_out = pdb.left_out();
+  remark(out.text, title);
+  remark(out.text, "cavities as pseudo-atoms: residue STP, residue number = rank,");
+  remark(out.text, "chain P = pockets, chain V = voids; atom CEN = cavity centre,");
+  remark(out.text, "atom SNK = orthocentre of a sink tetrahedron (B = its radius, A)");
+  if (out.left_out > 0)
+    remark(out.text, std::to_string(out.left_out) + " pseudo-atoms left out: beyond the PDB columns' range");
+  out.text += pdb.records();
+  out.text += "END\n";
   return out;
 }
 

@@ -8,6 +8,8 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace molecule {
 
@@ -36,5 +38,11 @@ private:
 
 // Writes content to path through a TemporaryFile.
 void write_file_atomically(const std::string& path, std::string_view content);
+
+// Writes several files (path, content) as one: every content goes to its
+// temporary file first, and only once all are complete are they renamed
+// into place, in order. A failure before that leaves every target as it
+// was (only a failed rename, after the others, could leave some renamed).
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace molecule

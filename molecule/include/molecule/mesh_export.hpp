@@ -29,7 +29,9 @@
 // holds every triangle and some points more than once (same coordinates).
 //
 // While writing, OpenMesh's own log streams (omerr, omlog, omout) are
-// silenced; this is not meant to be called from several threads at once.
+// silenced. OpenMesh's writers and streams are process-wide, so the
+// OpenMesh part of these calls is serialised by a lock: threads may write
+// meshes at the same time (one at a time through OpenMesh).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -75,5 +77,11 @@ void check_mesh_file_name(const std::string& path);
 // of range, a triangle with a repeated vertex, a colour count that does not
 // match, or a failed write.
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh);
+
+// The bytes write_mesh_file would write to path, in memory (path only
+// chooses the format and names the file in errors); `info`, if given,
+// receives what write_mesh_file returns. For callers that write several
+// files as one (write_files_atomically).
+std::string mesh_file_content(const std::string& path, const TriangleMesh& mesh, MeshFileInfo* info = nullptr);
 
 }  // namespace molecule

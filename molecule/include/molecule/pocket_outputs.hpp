@@ -7,11 +7,11 @@
 //   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
 //                 molecule.<fmt> (molecule_mesh)
 //
-// Each file appears whole or not at all (write_file_atomically,
-// write_mesh_file). Mesh files of an earlier run in meshes/ that this run
-// does not write again (it found fewer cavities, or wrote another format)
-// are removed, so the directory always describes one run; only names of
-// the form above are touched.
+// The files appear all together or not at all: all are made in memory,
+// then written through write_files_atomically. Mesh files of an earlier
+// run in meshes/ that this run does not write again (it found fewer
+// cavities, or wrote another format) are removed, so the directory always
+// describes one run; only names of the form above are touched.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -34,6 +34,9 @@ public:
   PocketOutputDir& operator=(const PocketOutputDir&) = delete;
 
   const std::filesystem::path& path() const { return path_; }
+  // What the last write() could not put in the files, one line each (e.g.
+  // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   // Writes every file; structure_path is what pockets.pml loads. Returns
   // the names written, relative to the directory.
@@ -47,6 +50,7 @@ private:
   std::filesystem::path path_;
   std::vector<std::filesystem::path> created_;
   bool written_ = false;
+  std::vector<std::string> warnings_;
 
   void create(const std::filesystem::path& dir);
   void remove_stale_meshes(const std::vector<std::string>& written) const;

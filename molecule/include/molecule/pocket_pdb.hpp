@@ -20,9 +20,16 @@
 
 namespace molecule {
 
-// The file's text; `title` goes into the first REMARK. Throws alpha::Error
-// when a coordinate does not fit the PDB columns (|x| >= 1e4 roughly) or
-// there are more than 99999 pseudo-atoms or 9999 cavities of one kind.
-std::string pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
+struct PocketPdb {
+  std::string text;
+  // Pseudo-atoms the PDB columns cannot hold, left out of text (a REMARK
+  // says how many): coordinates outside -999.999 .. 9999.999 (structures
+  // from large mmCIF files), more than 99999 pseudo-atoms or 9999 cavities
+  // of one kind. report.json has every cavity.
+  std::size_t left_out = 0;
+};
+
+// The file; `title` goes into the first REMARK.
+PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
 
 }  // namespace molecule
