@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -48,10 +49,10 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
       sub.add_option("--probe", probe, "Solvent probe radius added to every atom radius, A (0: van der Waals balls)")
           ->capture_default_str()
           ->check(finite_number())
-          ->check(CLI::NonNegativeNumber)
+          ->check(CLI::Range(0.0, kMaxProbe))
           ->group(group),
       sub.add_option("--model", selection.model, "Model number to read (MODEL n; default: the first model)")
-          ->check(CLI::PositiveNumber)
+          ->check(CLI::Range(1, std::numeric_limits<int>::max()))
           ->group(group),
       sub.add_option("--chains", selection.chains, "Chains to keep, e.g. A,B (default: all)")
           ->delimiter(',')
@@ -133,7 +134,8 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
 }
 
 void flush_stdout() {
-  if (std::fflush(stdout) != 0) throw std::runtime_error("cannot write to standard output");
+  // ferror too: a failed write can leave nothing buffered for fflush to fail on.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("cannot write to standard output");
 }
 
 }  // namespace alphapocket

@@ -19,6 +19,9 @@ namespace alphapocket {
 
 // Radius of the solvent probe added to every atom radius, A (water).
 inline constexpr double kDefaultProbe = 1.4;
+// Larger probes are refused: they make nothing of interest, and the
+// areas and volumes of balls that large lose their digits.
+inline constexpr double kMaxProbe = 100;
 
 struct InputOptions {
   std::string file;

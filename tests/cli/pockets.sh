@@ -147,13 +147,23 @@ case "$case_name" in
     [[ -z $(tree_of "$tmp/locked/o") ]] || fail "files left: $(tree_of "$tmp/locked/o")"
     ;;
   usage_errors)
-    for args in "--probe -1" "--probe nan" "--min-volume -5" "--mesh vrml" "--weighted" ""; do
+    for args in "--probe -1" "--probe nan" "--probe 1e10" "--model 0" "--min-volume -5" "--mesh vrml" "--weighted" ""; do
       # shellcheck disable=SC2086
       run pockets $args ${args:+"$pdb"} -o "$tmp/o"
       [[ $rc -eq 2 ]] || fail "'pockets $args': exit code $rc, expected 2"
       [[ $(wc -l <"$tmp/err") -eq 1 ]] || fail "'pockets $args': stderr is not one line"
       [[ ! -e "$tmp/o" ]] || fail "'pockets $args': the output directory was created"
     done
+    ;;
+  stdout_full)
+    # --json to a full device: the lost report is an error, not a success.
+    [[ -w /dev/full ]] || { echo "SKIP [$case_name]: no /dev/full"; exit 77; }
+    set +e
+    "$exe" pockets "$pdb" -o "$tmp/o" --json >/dev/full 2>"$tmp/err"
+    rc=$?
+    set -e
+    [[ $rc -ne 0 ]] || fail "exit code 0 with stdout lost"
+    grep -q "^ERROR: cannot write to standard output$" "$tmp/err" || fail "no error about stdout"
     ;;
   help)
     run pockets --help
