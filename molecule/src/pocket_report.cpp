@@ -145,15 +145,18 @@ std::string residue_id(const Atom& a) {
 }
 
 std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
-  std::vector<alpha::Index> sorted = indices;
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<alpha::Index> first;  // one atom per residue, by file order
-  for (const alpha::Index i : sorted) {
+  for (const alpha::Index i : indices)
     if (i >= atoms.size()) alpha::fail("atom index " + std::to_string(i) + " out of range");
-    const bool seen = std::any_of(first.begin(), first.end(),
-                                  [&](alpha::Index j) { return residue_key(atoms[j]) == residue_key(atoms[i]); });
-    if (!seen) first.push_back(i);
-  }
+  // By residue, then file order: the first of each run is its residue's first atom.
+  std::vector<alpha::Index> by_residue = indices;
+  std::sort(by_residue.begin(), by_residue.end(), [&](alpha::Index a, alpha::Index b) {
+    return std::tuple_cat(residue_key(atoms[a]), std::tie(a)) < std::tuple_cat(residue_key(atoms[b]), std::tie(b));
+  });
+  std::vector<alpha::Index> first;
+  for (std::size_t k = 0; k < by_residue.size(); ++k)
+    if (k == 0 || residue_key(atoms[by_residue[k - 1]]) != residue_key(atoms[by_residue[k]]))
+      first.push_back(by_residue[k]);
+  std::sort(first.begin(), first.end());
   return first;
 }
 
