@@ -11,10 +11,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "molecule/radii.hpp"
@@ -163,6 +166,16 @@ std::size_t count_residue(const std::vector<Atom>& atoms, const std::string& cha
 std::string error_of(const std::string& path, const StructureOptions& opt = {}) {
   try {
     read_structure(path, opt);
+  } catch (const molecule::StructureError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+// The same for the bytes of a file.
+std::string parse_error(std::string_view bytes, const std::string& name) {
+  try {
+    molecule::parse_structure(bytes, name);
   } catch (const molecule::StructureError& e) {
     return e.what();
   }
@@ -421,6 +434,114 @@ TEST_CASE("structure: an unknown element gets the default radius and one warning
   CHECK(s.report.warnings[0] == "3 atoms of unknown element 'X' (first: atom Q1 of LIG A1) given radius 1.8 A");
 }
 
+TEST_CASE("structure: warnings count only the kept atoms", "[structure]") {
+  // A protein of 4 atoms and a ligand with 2 atoms of unknown element "QX".
+  std::string pdb;
+  int serial = 0;
+  for (int i = 0; i < 4; ++i) pdb += pdb_atom("ATOM", ++serial, "CA", ' ', "ALA", 'A', i + 1, 3.8 * i, 0, 0, 1, "C");
+  for (int i = 0; i < 2; ++i) pdb += pdb_atom("HETATM", ++serial, "Q1", ' ', "LIG", 'A', 10, 9, i, 1, 1, "QX");
+  pdb += pdb_atom("HETATM", ++serial, "C1", ' ', "LIG", 'A', 10, 9, 2, 1, 1, "C");
+
+  // Dropped (the default): no warning, but the ligand atoms have radii.
+  const Structure s = molecule::parse_structure(pdb, "ligand.pdb");
+  CHECK(s.atoms.size() == 4);
+  CHECK(s.report.dropped_hetero == 3);
+  CHECK(s.report.warnings.empty());
+  REQUIRE(s.hetero_groups.size() == 1);
+  const auto& ligand = s.hetero_groups[0].atoms;
+  REQUIRE(ligand.size() == 3);
+  CHECK(ligand[0].element == "X");
+  CHECK(ligand[0].radius == molecule::kDefaultRadius);
+  CHECK(ligand[1].radius == molecule::kDefaultRadius);
+  CHECK(ligand[2].radius == 1.70);
+
+  // Kept: one warning for the two atoms.
+  StructureOptions hetero;
+  hetero.keep_hetero = true;
+  const Structure h = molecule::parse_structure(pdb, "ligand.pdb", hetero);
+  CHECK(h.atoms.size() == 7);
+  CHECK(h.report.warnings ==
+        std::vector<std::string>{"2 atoms of unknown element 'X' (first: atom Q1 of LIG A10) given radius 1.8 A"});
+}
+
+TEST_CASE("structure: PDB coordinates must be numbers", "[structure]") {
+  // A real file: the first ATOM record's x, y, z replaced by words; the
+  // last HETATM record's z blank.
+  std::string text = file_text(data("1fkgA.pdb"));
+  REQUIRE(parse_error(text, "x.pdb").empty());
+  std::string words = text;
+  const std::size_t first = words.find("ATOM  ");
+  REQUIRE(first == 0);
+  words.replace(first + 30, 24, "     abc     def     ghi");
+  CHECK(parse_error(words, "x.pdb") ==
+        "x.pdb: line 1: bad coordinates in ATOM record (columns 31-54: '     abc     def     ghi')");
+  std::string blank = text;
+  const std::size_t last = blank.rfind("\nHETATM") + 1;
+  const auto line_of = [&](std::size_t pos) { return std::count(blank.begin(), blank.begin() + pos, '\n') + 1; };
+  const std::string xy = blank.substr(last + 30, 16);
+  blank.replace(last + 46, 8, "        ");
+  CHECK(parse_error(blank, "x.pdb") == "x.pdb: line " + std::to_string(line_of(last)) +
+                                  ": bad coordinates in HETATM record (columns 31-54: '" + xy + "        ')");
+
+  // Four atoms, the third record edited.
+  const auto with_third = [](const std::function<void(std::string&)>& edit, const std::string& eol = "\n") {
+    std::string pdb;
+    for (int i = 0; i < 4; ++i) {
+      std::string line = pdb_atom("ATOM", i + 1, "CA", ' ', "ALA", 'A', i + 1, 3.8 * i, 1, 0, 1, "C");
+      line.pop_back();  // the "\n"
+      if (i == 2) edit(line);
+      pdb += line + eol;
+    }
+    return pdb;
+  };
+  const auto with_y = [&](const std::string& y, const std::string& eol = "\n") {
+    return with_third([&](std::string& line) { line.replace(38, 8, y); }, eol);
+  };
+  for (const char* y : {"     abc", "        ", "  1.5x  ", " 1.2.3  ", " - 1.000", "     nan", "   1.5e3", "   1 2  ",
+                        "       -", "       .", "\t  1.000"}) {
+    INFO("'" << y << "'");
+    CHECK(parse_error(with_y(y), "x.pdb") ==
+          "x.pdb: line 3: bad coordinates in ATOM record (columns 31-54: '   7.600" + std::string(y) + "   0.000')");
+  }
+  // Numbers written in other ways still read, with Windows line ends too.
+  for (const auto& [y, value] : std::vector<std::pair<std::string, double>>{
+           {"  +1.000", 1}, {"     -2.", -2}, {"      .5", 0.5}, {"-0.25   ", -0.25}, {"       7", 7}}) {
+    INFO("'" << y << "'");
+    for (const char* eol : {"\n", "\r\n"}) {
+      const Structure st = molecule::parse_structure(with_y(y, eol), "x.pdb");
+      REQUIRE(st.atoms.size() == 4);
+      CHECK(st.atoms[2].position.y == value);
+    }
+  }
+  // A record cut inside the z field (gemmi takes "\r\n" for its last columns).
+  const std::string cut = with_third([](std::string& line) { line.resize(53); }, "\r\n");
+  CHECK(parse_error(cut, "x.pdb") == "x.pdb: line 3: ATOM record shorter than 54 columns");
+  // Records after END are not read, nor checked.
+  CHECK(molecule::parse_structure(with_y("   1.000") + "END\n" + with_y("     abc"), "x.pdb").atoms.size() == 4);
+}
+
+TEST_CASE("structure: an mmCIF _atom_site without a column gemmi needs", "[structure]") {
+  const std::string text = file_text(data("1UYD.cif"));
+  // Tags renamed, as if the columns were missing.
+  const auto without = [&](const std::vector<std::string>& columns) {
+    std::string cif = text;
+    for (const std::string& c : columns) {
+      const std::string tag = "\n_atom_site." + c + " ";
+      const std::size_t at = cif.find(tag);
+      REQUIRE(at != std::string::npos);
+      cif.replace(at, tag.size(), "\n_atom_site." + c + "_gone ");
+    }
+    return parse_error(cif, "x.cif");
+  };
+  for (const std::string c : {"id", "type_symbol", "label_alt_id", "label_asym_id", "Cartn_x", "Cartn_y", "Cartn_z",
+                              "occupancy", "B_iso_or_equiv", "auth_seq_id"})
+    CHECK(without({c}) == "x.cif: mmCIF _atom_site lacks column(s) _atom_site." + c);
+  CHECK(without({"occupancy", "Cartn_y"}) ==
+        "x.cif: mmCIF _atom_site lacks column(s) _atom_site.Cartn_y, _atom_site.occupancy");
+  // Optional columns: still read.
+  CHECK(without({"pdbx_formal_charge", "group_PDB"}).empty());
+}
+
 TEST_CASE("structure: bad files give one line naming the file", "[structure]") {
   const std::string bad = data("bad");
   const auto expect_error = [](const std::string& path, const std::string& message) {
@@ -444,14 +565,6 @@ TEST_CASE("structure: bad files give one line naming the file", "[structure]") {
             "ATOM      1  N   ALA A   1      11.104   6.134");
 
   // Other bad bytes, through parse_structure.
-  const auto parse_error = [](std::string_view bytes, const std::string& name) {
-    try {
-      molecule::parse_structure(bytes, name);
-    } catch (const molecule::StructureError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   CHECK(parse_error(std::string("\x7f"
                                 "ELF\0\0\0\0binary",
                                 15),

@@ -24,10 +24,15 @@ namespace {
 
 // ---------------------------------------------------------------- input
 
-bool ends_with_ci(std::string_view s, std::string_view suffix) {
-  return s.size() >= suffix.size() && std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
+// Whether s equals `lower` (lower case) ignoring case.
+bool equals_ci(std::string_view s, std::string_view lower) {
+  return s.size() == lower.size() && std::equal(lower.begin(), lower.end(), s.begin(), [](char a, char b) {
            return a == std::tolower(static_cast<unsigned char>(b));
          });
+}
+
+bool ends_with_ci(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && equals_ci(s.substr(s.size() - suffix.size()), suffix);
 }
 
 bool is_blank(std::string_view text) {
@@ -72,6 +77,60 @@ Format detect_format(std::string_view text, const std::string& name) {
   fail(name, "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)");
 }
 
+// A coordinate field of a PDB record: blanks, an optional sign, digits with
+// at most one decimal point, blanks.
+bool is_pdb_number(std::string_view field) {
+  std::size_t i = field.find_first_not_of(' ');
+  if (i == std::string_view::npos) return false;
+  if (field[i] == '-' || field[i] == '+') ++i;
+  bool digits = false;
+  bool point = false;
+  for (; i < field.size() && field[i] != ' '; ++i) {
+    if (field[i] >= '0' && field[i] <= '9')
+      digits = true;
+    else if (field[i] == '.' && !point)
+      point = true;
+    else
+      return false;
+  }
+  return digits && field.find_first_not_of(' ', i) == std::string_view::npos;
+}
+
+// gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
+// a word, so the records it reads are checked here: those starting with
+// ATOM or HETA in any case, up to an END record.
+void check_pdb_coordinates(std::string_view text, const std::string& name) {
+  std::size_t line_number = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t eol = text.find('\n', i);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(i, eol - i);
+    i = eol + 1;
+    ++line_number;
+    if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
+        (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
+      return;
+    const bool atom = equals_ci(line.substr(0, 4), "atom");
+    if (!atom && !equals_ci(line.substr(0, 4), "heta")) continue;
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    const std::string_view record = atom ? "ATOM" : "HETATM";
+    const auto error = [&](const std::string& what) {
+      fail(name, "line " + std::to_string(line_number) + ": " + what);
+    };
+    if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns");
+    if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
+      error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
+            std::string(line.substr(30, 24)) + "')");
+  }
+}
+
+std::string join(const std::vector<std::string>& items, std::size_t max_items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size() && i < max_items; ++i) s += (i ? ", " : "") + items[i];
+  if (items.size() > max_items) s += ", ...";
+  return s;
+}
+
 // gemmi's messages may span lines and may name the file already.
 std::string one_line(std::string s, const std::string& name) {
   std::replace(s.begin(), s.end(), '\n', ' ');
@@ -79,18 +138,50 @@ std::string one_line(std::string s, const std::string& name) {
   return s.find(name) == std::string::npos ? name + ": " + s : s;
 }
 
+// The _atom_site columns gemmi requires (mmcif.hpp, make_structure_from_block;
+// label/auth_comp_id and label/auth_atom_id it checks itself): without one it
+// reads no atoms at all, without saying why.
+constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_alt_id", "label_asym_id",  "Cartn_x",
+                                             "Cartn_y", "Cartn_z",     "occupancy",    "B_iso_or_equiv", "auth_seq_id"};
+
+// The required columns a block's _atom_site lacks; none if it has no _atom_site.
+std::vector<std::string> missing_atom_site_columns(gemmi::cif::Block& block) {
+  std::vector<std::string> missing;
+  if (!block.find_mmcif_category("_atom_site.").ok()) return missing;
+  for (const char* column : kRequiredAtomSite)
+    if (!block.has_tag(std::string("_atom_site.") + column)) missing.push_back(std::string("_atom_site.") + column);
+  return missing;
+}
+
+bool has_atoms(const gemmi::Structure& st) {
+  for (const gemmi::Model& m : st.models)
+    for (const gemmi::Chain& c : m.chains)
+      for (const gemmi::Residue& r : c.residues)
+        if (!r.atoms.empty()) return true;
+  return false;
+}
+
 gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name) {
+  gemmi::Structure st;
+  std::vector<std::string> missing;
   try {
-    gemmi::Structure st = format == Format::Pdb
-                              ? gemmi::read_pdb_from_memory(text.data(), text.size(), name)
-                              : gemmi::make_structure(gemmi::cif::read_memory(text.data(), text.size(), name.c_str()));
+    if (format == Format::Pdb) {
+      st = gemmi::read_pdb_from_memory(text.data(), text.size(), name);
+    } else {
+      gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
+      st = gemmi::make_structure(doc);
+      if (!has_atoms(st)) missing = missing_atom_site_columns(doc.blocks.at(0));
+    }
     // Polymer, water or neither, where the file does not say (PDB files
     // without TER records).
     gemmi::add_entity_types(st, /*overwrite=*/false);
-    return st;
   } catch (const std::exception& e) {
     throw StructureError(one_line(e.what(), name));
   }
+  if (!missing.empty()) fail(name, "mmCIF _atom_site lacks column(s) " + join(missing, missing.size()));
+  if (!has_atoms(st)) fail(name, "no atoms in the file");
+  if (format == Format::Pdb) check_pdb_coordinates(text, name);
+  return st;
 }
 
 // ---------------------------------------------------------------- selection
@@ -172,12 +263,13 @@ bool only_other_conformers(const gemmi::Residue& r, char chosen) {
                      [&](const gemmi::Atom& a) { return a.altloc && a.altloc != chosen; });
 }
 
-// Radii per atom, with one warning per element that gets the default.
+// Radii per atom, with one warning per element that gets the default;
+// warnings count only the atoms kept (`kept`), the ones a caller uses.
 class RadiusAssigner {
 public:
-  double operator()(const Atom& a) {
+  double operator()(const Atom& a, bool kept) {
     const AtomRadius r = atom_radius(a.residue_name, a.name, a.element);
-    if (r.source == RadiusSource::Default) {
+    if (kept && r.source == RadiusSource::Default) {
       Unknown& u = unknown_[a.element];
       if (u.atoms++ == 0)
         u.first = "atom " + a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
@@ -216,13 +308,6 @@ Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain
   atom.hetero = r.het_flag == 'H';
   atom.position = {a.pos.x, a.pos.y, a.pos.z};
   return atom;
-}
-
-std::string join(const std::vector<std::string>& items, std::size_t max_items) {
-  std::string s;
-  for (std::size_t i = 0; i < items.size() && i < max_items; ++i) s += (i ? ", " : "") + items[i];
-  if (items.size() > max_items) s += ", ...";
-  return s;
 }
 
 int model_number(const gemmi::Model& m) {
@@ -318,7 +403,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
             kept = true;
           if (!kept && !in_ligand) continue;
           Atom atom = make_atom(a, res, chain);
-          atom.radius = radius(atom);
+          atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
           if (kept) out.atoms.push_back(std::move(atom));
         }
@@ -357,12 +442,6 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
   const Format format = detect_format(data, name);
   const gemmi::Structure st = parse_with_gemmi(data, format, name);
-  const bool no_atoms = std::all_of(st.models.begin(), st.models.end(), [](const gemmi::Model& m) {
-    return std::all_of(m.chains.begin(), m.chains.end(), [](const gemmi::Chain& c) {
-      return std::all_of(c.residues.begin(), c.residues.end(), [](const gemmi::Residue& r) { return r.atoms.empty(); });
-    });
-  });
-  if (no_atoms) fail(name, "no atoms in the file");
   Structure out = select(st, options, name);
   out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
   out.report.gzipped = gzipped;

@@ -33,10 +33,11 @@
 //
 // Errors throw alpha::Error (StructureError) with one line naming the file:
 // missing, a directory, empty, corrupt or truncated gzip data, not PDB or
-// mmCIF, a broken or truncated mmCIF/PDB file, no such model or chain, no
-// atoms left after the selection, fewer than 4 atoms. The library itself
-// never logs: what was kept and dropped, and warnings (e.g. an unknown
-// element), come back in StructureReport.
+// mmCIF, a broken or truncated mmCIF/PDB file (including a PDB coordinate
+// that is not a number, an mmCIF _atom_site without a column gemmi needs),
+// no such model or chain, no atoms left after the selection, fewer than 4
+// atoms. The library itself never logs: what was kept and dropped, and
+// warnings (e.g. an unknown element), come back in StructureReport.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -101,7 +102,8 @@ struct StructureReport {
   std::size_t dropped_hydrogen = 0;
   std::size_t hetero_groups = 0;  // = hetero_groups.size()
   // Problems that did not stop the reading, one line each (e.g. one per
-  // unrecognised element, which got molecule::kDefaultRadius).
+  // unrecognised element among the kept atoms, which got
+  // molecule::kDefaultRadius).
   std::vector<std::string> warnings;
 };
 
