@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -25,6 +26,7 @@
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
+#include "molecule/pymol_script.hpp"
 #include "molecule/structure.hpp"
 #include "mesh_checks.hpp"
 #include "point_sets.hpp"
@@ -325,16 +327,16 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   const Run& r = the_run();
   const std::string pml = testing::read_text(r.file("pockets.pml"));
   CHECK(pml.find("/cmd.load(\"" + kStructure + "\", \"1a26A\")\n") != std::string::npos);
-  std::map<std::string, std::set<int>> selected;  // selection name -> atom ids
+  // selection name -> its atoms as "chain:resi:name"
+  std::map<std::string, std::set<std::string>> selected;
   std::map<std::string, std::vector<double>> centers;
+  static const std::regex kClause(R"(\(1a26A and chain (\S+) and resi (\S+) and name (\S+)\))");
   for (const std::string& line : lines_of(pml)) {
     if (line.rfind("select ", 0) == 0) {
       const std::string name = line.substr(7, line.find(',') - 7);
-      const std::size_t ids = line.find(" and id ");
-      if (ids == std::string::npos) continue;
-      std::string list = line.substr(ids + 8);
-      list.pop_back();  // ')'
-      for (const std::string& id : split(list, '+')) selected[name].insert(std::stoi(id));
+      for (std::sregex_iterator m(line.begin(), line.end(), kClause), end; m != end; ++m)
+        for (const std::string& atom : split((*m)[3], '+'))
+          selected[name].insert((*m)[1].str() + ":" + (*m)[2].str() + ":" + atom);
     } else if (line.rfind("pseudoatom ", 0) == 0) {
       const std::string name = line.substr(11, line.find(',') - 11);
       double x = 0, y = 0, z = 0;
@@ -347,9 +349,13 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string name = kind + "_" + std::to_string(i + 1);
       INFO(name);
-      std::set<int> serials;
-      for (const json& a : list[i]["lining_atoms"]) serials.insert(a["serial"].get<int>());
-      CHECK(selected[name] == serials);
+      std::set<std::string> atoms;  // "A:TYR:49" + "OH" -> "A:49:OH"
+      for (const json& a : list[i]["lining_atoms"]) {
+        const std::vector<std::string> residue = split(a["residue"].get<std::string>(), ':');
+        atoms.insert(residue[0] + ":" + residue[2] + ":" + a["name"].get<std::string>());
+      }
+      REQUIRE(!atoms.empty());
+      CHECK(selected[name] == atoms);
       REQUIRE(centers.count(name + "_center") == 1);
       for (int k = 0; k < 3; ++k)  // both print 3 decimals, rounded on their own
         CHECK(centers[name + "_center"][k] == Approx(list[i]["center"][k].get<double>()).margin(1.1e-3));
@@ -488,6 +494,35 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
   CHECK(residues[0]["insertion_code"] == "");
   CHECK(residues[2]["number"] == -3);
   CHECK(report["pockets"][0].count("mesh") == 0);  // no mesh format: no meshes
+
+  // PyMOL selects by residue and name, with its special characters escaped.
+  s.atoms[1].name = "C1*";
+  run.file = "/x/1abc.pdb";
+  const std::string pml = molecule::pymol_script(run, run.file);
+  CHECK(pml.find("select pocket_1, (1abc and chain A and resi 42 and name CA+C1\\*) or "
+                 "(1abc and chain A and resi 42B and name CA) or (1abc and chain x,y and resi \\-3 and name CA)\n") !=
+        std::string::npos);
+}
+
+TEST_CASE("pockets outputs: pockets.pml of a file with several models shows the model searched",
+          "[pocket_outputs]") {
+  const std::string file = std::string(ALPHAPOCKET_TEST_DATA) + "/1d3z_models_1_2.pdb.gz";
+  molecule::StructureOptions second;
+  second.model = 2;
+  const molecule::Structure s = molecule::read_structure(file, second);
+  CHECK(s.report.models == 2);
+  CHECK(s.report.model_index == 1);
+  const molecule::PocketSearch search = molecule::search_pockets(s, {});
+  molecule::PocketRun run;
+  run.file = file;
+  run.structure = &s;
+  run.search = &search;
+  const std::string pml = molecule::pymol_script(run, file);
+  CHECK(pml.find("/cmd.load(\"" + file + "\", \"1d3z_models_1_2_models\")\n/cmd.create(\"1d3z_models_1_2\", "
+                 "\"1d3z_models_1_2_models\", 2, 1); cmd.delete(\"1d3z_models_1_2_models\")\n") != std::string::npos);
+  // A single-model file loads as it is.
+  CHECK(the_run().report["input"]["model"] == 1);
+  CHECK(testing::read_text(the_run().file("pockets.pml")).find("cmd.create") == std::string::npos);
 }
 
 TEST_CASE("pockets outputs: output directory errors leave nothing behind", "[pocket_outputs]") {

@@ -3,14 +3,16 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <tuple>
 
 #include "molecule/pocket_colors.hpp"
 
 namespace molecule {
 namespace {
 
-// Atom ids per "select" line: keeps lines short for PyMOL's parser.
-constexpr std::size_t kIdsPerLine = 40;
+// Residues per "select" line: keeps lines short for PyMOL's parser.
+constexpr std::size_t kResiduesPerLine = 8;
 
 // A PyMOL object name from the file name: letters, digits and '_' only
 // ("1a26A", as PyMOL names a fetched entry).
@@ -62,6 +64,41 @@ std::vector<Named> named_cavities(const Cavities& cavities) {
   return out;
 }
 
+// A word of PyMOL's selection language: a leading '-' (a range otherwise)
+// and the wildcard '*' escaped; '' for an empty one (a blank chain id).
+std::string selection_word(const std::string& w) {
+  std::string out;
+  for (const char c : w) {
+    if (c == '*' || (c == '-' && out.empty())) out += '\\';
+    out += c;
+  }
+  return out.empty() ? std::string("''") : out;
+}
+
+// The atoms as one clause per residue, in order of their first atom:
+// "(obj and chain A and resi 42 and name CA+CB)". By chain, residue and
+// name, not by serial: PyMOL gives every state the first model's serials,
+// and mmCIF numbers the atoms of each model apart.
+std::vector<std::string> residue_clauses(const std::string& obj, const std::vector<Atom>& atoms,
+                                         const std::vector<alpha::Index>& indices) {
+  std::vector<std::string> clauses, names;
+  std::map<std::tuple<std::string, int, char>, std::size_t> clause_of;
+  for (const alpha::Index i : indices) {
+    const Atom& a = atoms.at(i);
+    const auto [it, added] = clause_of.try_emplace({a.chain, a.seq_num, a.icode}, clauses.size());
+    if (added) {
+      clauses.push_back("(" + obj + " and chain " + selection_word(a.chain) + " and resi " +
+                        selection_word(std::to_string(a.seq_num) + (a.icode ? std::string(1, a.icode) : "")) +
+                        " and name ");
+      names.emplace_back();
+    }
+    std::string& n = names[it->second];
+    n += (n.empty() ? "" : "+") + selection_word(a.name);
+  }
+  for (std::size_t k = 0; k < clauses.size(); ++k) clauses[k] += names[k] + ")";
+  return clauses;
+}
+
 }  // namespace
 
 std::string pymol_script(const PocketRun& run, const std::string& structure_path) {
@@ -74,7 +111,15 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   s += "# Run with `pymol pockets.pml` or, inside PyMOL, `@pockets.pml`. Pockets and voids are\n";
   s += "# coloured by site rank (report.json sites); pocket_N selects the atoms lining pocket N and\n";
   s += "# pocket_N_center is its centre (void_N, void_N_center likewise).\n";
-  s += "/cmd.load(" + python_string(structure_path) + ", \"" + obj + "\")\n";
+  const StructureReport& report = run.structure->report;
+  if (report.models > 1) {
+    // PyMOL loads every model as a state: keep the one searched.
+    s += "/cmd.load(" + python_string(structure_path) + ", \"" + obj + "_models\")\n";
+    s += "/cmd.create(\"" + obj + "\", \"" + obj + "_models\", " + std::to_string(report.model_index + 1) +
+         ", 1); cmd.delete(\"" + obj + "_models\")\n";
+  } else {
+    s += "/cmd.load(" + python_string(structure_path) + ", \"" + obj + "\")\n";
+  }
   s += "hide everything, " + obj + "\n";
   s += "show cartoon, " + obj + "\n";
   s += "color grey80, " + obj + "\n";
@@ -87,15 +132,12 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   for (const Named& c : cavities) {
     s += "set_color ap_" + c.name + ", [" + std::to_string(c.color.r) + ", " + std::to_string(c.color.g) + ", " +
          std::to_string(c.color.b) + "]\n";
-    const auto& lining = c.cavity->lining_atoms;
-    for (std::size_t k = 0; k < lining.size() || k == 0; k += kIdsPerLine) {
-      std::string ids;
-      for (std::size_t j = k; j < std::min(lining.size(), k + kIdsPerLine); ++j)
-      {
-        if (!ids.empty()) ids += '+';
-        ids += std::to_string(atoms.at(lining[j]).serial);
-      }
-      const std::string part = ids.empty() ? "none" : "(" + obj + " and id " + ids + ")";
+    const std::vector<std::string> clauses = residue_clauses(obj, atoms, c.cavity->lining_atoms);
+    for (std::size_t k = 0; k < clauses.size() || k == 0; k += kResiduesPerLine) {
+      std::string part;
+      for (std::size_t j = k; j < std::min(clauses.size(), k + kResiduesPerLine); ++j)
+        part += (part.empty() ? "" : " or ") + clauses[j];
+      if (part.empty()) part = "none";
       s += "select " + c.name + ", " + (k == 0 ? part : c.name + " or " + part) + "\n";
     }
     const alpha::Vec3& p = c.cavity->center;

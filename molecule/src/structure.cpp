@@ -356,6 +356,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   StructureReport& report = out.report;
   report.models = st.models.size();
   report.model = model_number(model);
+  report.model_index = std::size_t(&model - st.models.data());
   RadiusAssigner radius;
   const auto wanted_chain = [&](const std::string& chain) {
     return options.chains.empty() ||

@@ -2,10 +2,11 @@
 // (`pymol OUTDIR/pockets.pml`, or `@OUTDIR/pockets.pml` inside PyMOL).
 //
 // It loads the structure file (by the path given: absolute, so the script
-// works from any directory), shows it as a grey cartoon under a light
-// surface, and for each pocket and void of rank N
-//   - the selection pocket_N / void_N: its lining atoms (by atom serial,
-//     PyMOL's "id"), shown as sticks;
+// works from any directory; of a file with several models it keeps the
+// model searched), shows it as a grey cartoon under a light surface, and
+// for each pocket and void of rank N
+//   - the selection pocket_N / void_N: its lining atoms (by chain, residue
+//     number and insertion code, and atom name), shown as sticks;
 //   - the colour ap_pocket_N / ap_void_N (molecule::rank_color, the same as
 //     the meshes), given to those atoms, so the surface is coloured there
 //     (where pockets share atoms, the better rank's colour wins);

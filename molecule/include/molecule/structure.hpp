@@ -92,6 +92,7 @@ struct StructureReport {
   bool gzipped = false;
   std::size_t models = 0;          // models in the file
   int model = 0;                   // number of the model read
+  std::size_t model_index = 0;     // its position among the file's models, from 0
   std::size_t atoms_in_model = 0;  // every atom of that model
   std::size_t kept = 0;            // = atoms.size()
   // Dropped atoms, by reason (each atom once, in this order).
