@@ -5,6 +5,7 @@
 #include <random>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
 #include "point_sets.hpp"
 
 using namespace alpha;
@@ -89,6 +90,9 @@ TEST_CASE("Regular tetrahedron: known sizes and classification", "[alpha]") {
   CHECK(a.spectrum_value(3) == 3.0);
   CHECK(a.level(1.99) == 1);
   CHECK(a.level(2.0) == 2);  // a value equal to alpha counts as present
+  CHECK(a.level(HUGE_VAL) == 4);
+  CHECK(a.level(-HUGE_VAL) == 0);
+  CHECK_THROWS_AS(a.level(std::nan("")), Error);
   const auto at = [&](double alpha_sq) { return a.counts(a.level(alpha_sq)); };
   CHECK(at(-1)[0][int(C::exterior)] == 4);
   CHECK(at(0)[0][int(C::singular)] == 4);

@@ -290,6 +290,7 @@ Simplex AlphaComplex::simplex(Index g) const {
 double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rounded_size(simplex(spectrum_[rank])); }
 
 Index AlphaComplex::level(double alpha_sq) const {
+  if (std::isnan(alpha_sq)) fail("alpha complex: alpha_sq is not a number");
   SizeKernel sizes = size_kernel();
   // First rank whose value exceeds alpha_sq.
   Index lo = 0, hi = Index(spectrum_.size());

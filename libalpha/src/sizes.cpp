@@ -205,16 +205,19 @@ Wide operator*(const Wide& a, const Wide& b) {
 bool certainly_zero(const Wide& x) { return x.ok && x.v == 0; }
 bool certainly_zero(const mpz_class& x) { return x == 0; }
 
-template <class T> T to_int(const Dyadic& d, int shift);
-template <> Wide to_int<Wide>(const Dyadic& d, int shift) {
+// d in units of 2^unit (the shift only for nonzero d: a zero's exponent is
+// INT_MAX).
+template <class T> T to_int(const Dyadic& d, int unit);
+template <> Wide to_int<Wide>(const Dyadic& d, int unit) {
   if (d.m == 0) return Wide(0);
+  const int shift = d.e - unit;
   const int bits = shift + static_cast<int>(std::bit_width(static_cast<std::uint64_t>(std::llabs(d.m))));
   if (bits > 120) return {0, false};
   return {i128(d.m) << shift, true};
 }
-template <> mpz_class to_int<mpz_class>(const Dyadic& d, int shift) {
+template <> mpz_class to_int<mpz_class>(const Dyadic& d, int unit) {
   mpz_class r(static_cast<long>(d.m));
-  if (d.m != 0) r <<= static_cast<mp_bitcnt_t>(shift);
+  if (d.m != 0) r <<= static_cast<mp_bitcnt_t>(d.e - unit);
   return r;
 }
 
@@ -238,9 +241,9 @@ struct Scaled {
     unit = std::min(ec, ew == INT_MAX ? INT_MAX : ew >> 1);  // >> floors
     if (unit == INT_MAX) unit = 0;                            // all zero
   }
-  template <class T> T coord(int i, int a) const { return to_int<T>(c[i][a], c[i][a].e - unit); }
-  template <class T> T weight(int i) const { return to_int<T>(w[i], w[i].e - 2 * unit); }
-  template <class T> T alpha_value() const { return to_int<T>(alpha, alpha.e - 2 * unit); }
+  template <class T> T coord(int i, int a) const { return to_int<T>(c[i][a], unit); }
+  template <class T> T weight(int i) const { return to_int<T>(w[i], 2 * unit); }
+  template <class T> T alpha_value() const { return to_int<T>(alpha, 2 * unit); }
 
   // The simplex of k + 1 points stored from slot `first` on.
   template <class T> Local<T> local(int first, int k) const {
@@ -495,6 +498,7 @@ int SizeKernel::compare(const Simplex& a, const Size& sa, const Simplex& b, cons
 }
 
 int SizeKernel::compare(const Simplex& a, double alpha_sq) {
+  if (std::isnan(alpha_sq)) fail("sizes: alpha_sq is not a number");
   if (std::isinf(alpha_sq)) {
     ++stats_.compare.filtered;
     return alpha_sq > 0 ? -1 : 1;

@@ -59,7 +59,8 @@ public:
   std::size_t spectrum_size() const { return spectrum_.size(); }
   double spectrum_value(Index rank) const;  // nearest double to the exact value
   // Number of critical values <= alpha_sq (exact): simplices whose entry
-  // rank is below this level are present at alpha_sq.
+  // rank is below this level are present at alpha_sq. Throws alpha::Error
+  // for NaN.
   Index level(double alpha_sq) const;
 
   // Interval records, returned by value: they are stored by field.

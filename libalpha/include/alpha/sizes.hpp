@@ -82,7 +82,8 @@ public:
   // Center of the smallest orthogonal sphere, in floating point (not exact).
   Vec3 center(const Simplex& s) const;
 
-  // Exact sign of size(a) - size(b), and of size(a) - alpha_sq.
+  // Exact sign of size(a) - size(b), and of size(a) - alpha_sq (alpha_sq
+  // NaN: alpha::Error).
   int compare(const Simplex& a, const Simplex& b);
   int compare(const Simplex& a, double alpha_sq);
   // The same with sizes the caller already computed (sa = size(a), ...).
