@@ -19,6 +19,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "alpha/input_file.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -43,9 +44,11 @@ struct Balls {
 
 Balls read_balls(const InputOptions& opt) {
   const bool structure = molecule::is_structure_file(opt.file);
-  if (!structure && !opt.weighted)
+  if (!structure && !opt.weighted) {
+    alpha::read_input_file(opt.file);  // a missing file or a directory is the first thing to say
     throw std::runtime_error(opt.file +
                              ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
+  }
   Balls b;
   std::vector<molecule::Atom> atoms;
   b.set = read_input(opt, &atoms);

@@ -103,6 +103,8 @@ case $case_name in
     expect_error "$tmp/two.xyz" 'but --probe is for structure files'
     ;;
   missing_file)
+    run surface "$tmp/none.xyz"  # a point file: said before that it holds no balls
+    expect_error "$tmp/none.xyz" 'no such file'
     run surface "$tmp/none.pdb"
     expect_error "$tmp/none.pdb"
     ;;
