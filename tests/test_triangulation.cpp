@@ -170,6 +170,12 @@ TEST_CASE("Unusable input gives a clear error", "[triangulation][errors]") {
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, nan}}),
                     Catch::Contains("not a finite number"));
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1e300}}), Catch::Contains("out of range"));
+  // Tiny sets: the scale below which sizes underflow, and just above it.
+  CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1e-101, 0, 0}, {0, 1e-101, 0}, {0, 0, 1e-101}}),
+                    Catch::Contains("span only"));
+  CHECK(Triangulation(V{{0, 0, 0}, {1e-99, 0, 0}, {0, 1e-99, 0}, {0, 0, 1e-99}}).num_finite_cells() == 1);
+  // A tiny coordinate in a set of ordinary extent is fine.
+  CHECK(Triangulation(V{{1e-300, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).num_finite_cells() == 1);
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {1.0}),
                     Catch::Contains("weights"));
 }

@@ -19,6 +19,7 @@ namespace {
 // differences stay well inside double range for the filters.
 constexpr double kMaxCoordinate = 1e15;
 constexpr double kMaxWeight = 1e30;
+constexpr double kMinExtent = 1e-100;
 
 void check_input(const std::vector<Vec3>& points, const std::vector<double>& weights) {
   if (!weights.empty() && weights.size() != points.size())
@@ -35,6 +36,16 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
       fail("point " + std::to_string(i) + ": weight " + std::to_string(weights[i]) +
            " is not a finite number within 1e30");
   }
+  // Sizes scale as the squared extent: below this, the doubles that report
+  // them (spectrum values, alpha_sq) would round to 0 or subnormals.
+  double extent = 0;
+  for (const auto axis : {&Vec3::x, &Vec3::y, &Vec3::z}) {
+    const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                              [&](const Vec3& a, const Vec3& b) { return a.*axis < b.*axis; });
+    if (lo != points.end()) extent = std::max(extent, (*hi).*axis - (*lo).*axis);
+  }
+  if (extent > 0 && extent < kMinExtent)
+    fail("the points span only " + std::to_string(extent) + " (below 1e-100): their sizes would underflow");
 }
 
 }  // namespace
@@ -276,6 +287,8 @@ private:
         c = free_cells_.back();
         free_cells_.pop_back();
       } else {
+        // Cell ids are 32-bit, kNone and kInfinite reserved (some 6e8 points).
+        if (cells_.size() >= kInfinite) fail("too many cells for 32-bit cell ids");
         c = static_cast<Index>(cells_.size());
         cells_.push_back({});
         if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
