@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "alpha/alpha_complex.hpp"
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
+#include "alpha/sizes.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/cavities.hpp"
@@ -108,7 +110,18 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     CHECK(c.sa_area >= 0);
     CHECK(c.max_alpha_sq > 0);
     CHECK(c.fill_alpha_sq == c.max_alpha_sq);
-    CHECK(c.max_probe_radius >= b.probe);  // empty at alpha_sq = 0: the probe fits
+    // The probe at the orthocentre of the last cell to fill, against every atom.
+    Index last = c.cells.front();
+    for (Index cell : c.cells)
+      if (ac.cell_entry(cell) > ac.cell_entry(last) || (ac.cell_entry(cell) == ac.cell_entry(last) && cell > last))
+        last = cell;
+    const auto& lv = t.cell(last).v;
+    const Vec3 z = alpha::SizeKernel(t.points().data(), t.weights().data()).center(alpha::Simplex(lv[0], lv[1], lv[2], lv[3]));
+    double clearance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < b.points.size(); ++i)
+      clearance = std::min(clearance, std::sqrt(alpha::dot(z - b.points[i], z - b.points[i])) - b.radii[i]);
+    CHECK(c.max_probe_radius == Approx(clearance).epsilon(1e-12));
+    CHECK(c.max_probe_radius > b.probe);  // empty at alpha_sq = 0: the probe fits
     CHECK(c.close_alpha_sq <= c.fill_alpha_sq);
     CHECK((pocket ? c.close_alpha_sq > 0 : c.close_alpha_sq <= 0));
     CHECK(c.mouths.empty() == !pocket);
@@ -125,6 +138,16 @@ void check_invariants(const Balls& b, const Cavities& cav) {
       }
     }
     CHECK(c.mouth_area == Approx(mouth_area));
+    // Mouths are maximal: no two of one kind share an edge.
+    for (std::size_t m = 0; m < c.mouths.size(); ++m)
+      for (std::size_t n = m + 1; n < c.mouths.size(); ++n) {
+        if (c.mouths[m].to_outside != c.mouths[n].to_outside) continue;
+        std::set<Index> edges;
+        for (Index f : c.mouths[m].triangles)
+          for (Index e : s.triangle_edges(f)) edges.insert(e);
+        for (Index f : c.mouths[n].triangles)
+          for (Index e : s.triangle_edges(f)) CHECK(edges.count(e) == 0);
+      }
     CHECK(c.buriedness >= 0);
     CHECK(c.buriedness <= 1);
     if (!pocket) CHECK(c.depth == 0);
@@ -454,4 +477,26 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   const Cavities cav2 = again.cavities();
   REQUIRE(cav2.pockets.size() == cav.pockets.size());
   for (std::size_t k = 0; k < cav.pockets.size(); ++k) CHECK(same(cav.pockets[k], cav2.pockets[k]));
+}
+
+TEST_CASE("Cavities: openings of one kind around an edge form one mouth", "[cavities]") {
+  // Random balls where a split pocket has two outside openings and two
+  // openings into a neighbouring part around one edge: grouped by edge
+  // alone, the outside ones came apart (3 mouths instead of 2).
+  std::mt19937_64 rng(1717);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> pts;
+  std::vector<double> radii;
+  for (int i = 0; i < 77; ++i) {
+    const double x = 10 * u(rng), y = 10 * u(rng), z = 10 * u(rng);
+    pts.push_back({x, y, z});
+    radii.push_back(0.5 + u(rng));
+  }
+  const Balls b(pts, radii, 0.3);
+  const Cavities cav = b.cavities(0, std::numeric_limits<double>::infinity());
+  check_invariants(b, cav);
+  std::size_t inner = 0;
+  for (const Cavity& c : cav.pockets)
+    for (const auto& m : c.mouths) inner += !m.to_outside;
+  CHECK(inner > 0);  // split pockets: the case arises
 }

@@ -5,11 +5,13 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
 #include "alpha/persistent_basins.hpp"
+#include "alpha/sizes.hpp"
 #include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
 
@@ -56,13 +58,16 @@ std::vector<Mouth> group_mouths(const alpha::Simplices& s, const std::vector<Ope
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::vector<std::pair<Index, Index>> by_edge;  // (edge, position in openings)
+  // (edge, kind, position in openings): the openings of one kind around an
+  // edge sort next to each other, whatever other kind shares the edge.
+  std::vector<std::tuple<Index, bool, Index>> by_edge;
   for (Index k = 0; k < openings.size(); ++k)
-    for (Index e : s.triangle_edges(openings[k].first)) by_edge.emplace_back(e, k);
+    for (Index e : s.triangle_edges(openings[k].first)) by_edge.emplace_back(e, openings[k].second, k);
   std::sort(by_edge.begin(), by_edge.end());
   for (std::size_t k = 1; k < by_edge.size(); ++k) {
-    const Index a = by_edge[k - 1].second, b = by_edge[k].second;
-    if (by_edge[k].first != by_edge[k - 1].first || openings[a].second != openings[b].second) continue;
+    const auto& [edge_a, kind_a, a] = by_edge[k - 1];
+    const auto& [edge_b, kind_b, b] = by_edge[k];
+    if (edge_a != edge_b || kind_a != kind_b) continue;
     const Index ra = find(a), rb = find(b);
     if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
   }
@@ -111,7 +116,8 @@ class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
-        flow_(ac, level_), space_(ac), cavity_of_(t_.num_cells(), alpha::kNone),
+        flow_(ac, level_), space_(ac), sizes_(t_.points().data(), t_.weighted() ? t_.weights().data() : nullptr),
+        cavity_of_(t_.num_cells(), alpha::kNone),
         pair_of_cell_(t_.num_cells(), alpha::kNone) {
     // The dimension-2 pair killed by each cell.
     const auto& pairs = ac.persistence();
@@ -164,10 +170,24 @@ private:
   Index level_;
   alpha::DiscreteFlow flow_;
   CavitySpace space_;
+  alpha::SizeKernel sizes_;  // for orthocentres
   std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
   std::vector<Index> pair_of_cell_;  // cell -> dimension-2 pair it kills
 
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
+
+  alpha::Simplex cell_simplex(Index c) const {
+    const auto& v = t_.cell(c).v;
+    return alpha::Simplex(v[0], v[1], v[2], v[3]);
+  }
+
+  // Radius of the largest probe centred at x: its distance to the nearest
+  // atom's van der Waals sphere.
+  double clearance(const Vec3& x) const {
+    double r = std::numeric_limits<double>::infinity();
+    for (Index i = 0; i < t_.num_points(); ++i) r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]);
+    return r;
+  }
 
   void keep(std::vector<Cavity>& list, Cavity&& c) const {
     if (c.sa_volume >= options_.min_volume) list.push_back(std::move(c));
@@ -220,7 +240,7 @@ private:
 
     cav.max_alpha_sq = ac_.spectrum_value(ac_.cell_entry(last));
     cav.fill_alpha_sq = cav.max_alpha_sq;
-    cav.max_probe_radius = probe_radius(t_.cell(last).v, radii_, options_.probe, cav.max_alpha_sq);
+    cav.max_probe_radius = clearance(sizes_.center(cell_simplex(last)));
     const Index p = pair_of_cell_[last];
     cav.close_alpha_sq = p == alpha::kNone ? cav.fill_alpha_sq : ac_.spectrum_value(ac_.persistence()[p].birth);
 
