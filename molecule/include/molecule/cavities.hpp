@@ -126,7 +126,8 @@ struct Tunnel {
   // r_i + rho of atom i; so rho = min over the triangle's atoms of
   // sqrt((r_i + probe)^2 + death) - r_i. Exact for equal radii (then the
   // grown balls are the probe's excluded balls: rho = sqrt(death) for
-  // unweighted points), a lower bound otherwise; >= probe, A.
+  // unweighted points); for unequal radii an estimate (grown balls and
+  // excluded balls differ slightly); >= probe, A.
   double bottleneck_radius = 0;
   std::vector<alpha::Index> lining_atoms;  // vertices of the bottleneck triangle, sorted
 };
