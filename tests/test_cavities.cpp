@@ -84,6 +84,28 @@ double tetra_volume(const alpha::Triangulation& t, Index c) {
   return alpha::tetrahedron_volume(t.point(v[0]), t.point(v[1]), t.point(v[2]), t.point(v[3]));
 }
 
+// The cells connected to the outside at `level`: reached from the infinite
+// cells through triangles absent there (entry >= level), by search.
+std::vector<char> open_cells(const alpha::AlphaComplex& ac, Index level) {
+  const alpha::Triangulation& t = ac.triangulation();
+  const alpha::Simplices& s = ac.simplices();
+  std::vector<char> reached(t.num_cells(), 0);
+  std::vector<Index> stack;
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (t.is_infinite(c)) reached[c] = 1, stack.push_back(c);
+  while (!stack.empty()) {
+    const Index c = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 4; ++k) {
+      const Index n = t.cell(c).n[k];
+      if (reached[n]) continue;  // infinite cells too: only their finite facet leads in
+      const Index f = s.cell_triangle(c, k);
+      if (ac.triangle_interval(f).entry >= level) reached[n] = 1, stack.push_back(n);
+    }
+  }
+  return reached;
+}
+
 // Properties every result must have, whatever the input.
 void check_invariants(const Balls& b, const Cavities& cav) {
   const alpha::AlphaComplex& ac = b.complex;
@@ -123,6 +145,16 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     CHECK(c.max_probe_radius == Approx(clearance).epsilon(1e-12));
     CHECK(c.max_probe_radius > b.probe);  // empty at alpha_sq = 0: the probe fits
     CHECK(c.close_alpha_sq <= c.fill_alpha_sq);
+    // Cut off from the outside from close_alpha_sq on, not just below it.
+    // The ranks whose value rounds to close_alpha_sq (level() compares
+    // exactly, and a value may round down): [below, sealed).
+    Index below = ac.level(c.close_alpha_sq), sealed = below;
+    while (below > 0 && ac.spectrum_value(below - 1) == c.close_alpha_sq) --below;
+    while (sealed < ac.spectrum_size() && ac.spectrum_value(sealed) == c.close_alpha_sq) ++sealed;
+    REQUIRE(below < sealed);
+    const std::vector<char> open_at = open_cells(ac, sealed), open_below = open_cells(ac, below);
+    CHECK(std::none_of(c.cells.begin(), c.cells.end(), [&](Index x) { return open_at[x]; }));
+    CHECK(std::any_of(c.cells.begin(), c.cells.end(), [&](Index x) { return open_below[x]; }));
     CHECK((pocket ? c.close_alpha_sq > 0 : c.close_alpha_sq <= 0));
     CHECK(c.mouths.empty() == !pocket);
     double mouth_area = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <queue>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -111,19 +112,40 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
   return tn;
 }
 
+// Per cell, the first level (entry rank) from which on it is cut off from
+// the outside: no path of cells through absent triangles (entry >= level;
+// their cells are absent too) reaches an infinite cell. That is the
+// largest, over paths to the outside, of the smallest triangle entry on
+// the path: a widest-path search from the infinite cells, largest first.
+std::vector<Index> sealed_from(const alpha::AlphaComplex& ac) {
+  const alpha::Triangulation& t = ac.triangulation();
+  const alpha::Simplices& s = ac.simplices();
+  std::vector<Index> sealed(t.num_cells(), 0);
+  std::priority_queue<std::pair<Index, Index>> queue;  // (value, cell), largest value first
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (t.is_infinite(c)) queue.emplace(sealed[c] = alpha::kNever, c);
+  while (!queue.empty()) {
+    const auto [value, c] = queue.top();
+    queue.pop();
+    if (value != sealed[c]) continue;  // superseded
+    const int inf = t.infinite_position(c);
+    for (int k = 0; k < 4; ++k) {
+      const Index n = t.cell(c).n[k];
+      if (t.is_infinite(n) || (inf >= 0 && k != inf)) continue;  // outside already; not a finite triangle
+      const Index through = std::min(value, ac.triangle_interval(s.cell_triangle(c, k)).entry);
+      if (through > sealed[n]) queue.emplace(sealed[n] = through, n);
+    }
+  }
+  return sealed;
+}
+
 // Everything find_cavities shares between the cavities of one complex.
 class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         flow_(ac, level_), space_(ac), sizes_(t_.points().data(), t_.weighted() ? t_.weights().data() : nullptr),
-        cavity_of_(t_.num_cells(), alpha::kNone),
-        pair_of_cell_(t_.num_cells(), alpha::kNone) {
-    // The dimension-2 pair killed by each cell.
-    const auto& pairs = ac.persistence();
-    for (Index k = 0; k < pairs.size(); ++k)
-      if (pairs[k].dim == 2) pair_of_cell_[pairs[k].death_simplex] = k;
-  }
+        cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)) {}
 
   Index level() const { return level_; }
 
@@ -172,7 +194,7 @@ private:
   CavitySpace space_;
   alpha::SizeKernel sizes_;  // for orthocentres
   std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
-  std::vector<Index> pair_of_cell_;  // cell -> dimension-2 pair it kills
+  std::vector<Index> sealed_from_;   // cell -> see sealed_from()
 
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
 
@@ -241,8 +263,9 @@ private:
     cav.max_alpha_sq = ac_.spectrum_value(ac_.cell_entry(last));
     cav.fill_alpha_sq = cav.max_alpha_sq;
     cav.max_probe_radius = clearance(sizes_.center(cell_simplex(last)));
-    const Index p = pair_of_cell_[last];
-    cav.close_alpha_sq = p == alpha::kNone ? cav.fill_alpha_sq : ac_.spectrum_value(ac_.persistence()[p].birth);
+    Index sealed = 0;
+    for (Index c : cells) sealed = std::max(sealed, sealed_from_[c]);
+    cav.close_alpha_sq = ac_.spectrum_value(sealed);
 
     // The largest distance from a cell to its nearest mouth. A cell stops
     // being searched as soon as some mouth is within the depth so far (it

@@ -95,13 +95,12 @@ struct Cavity {
   // last (the centre of the cavity's widest empty sphere): its distance to
   // the nearest atom's van der Waals sphere, A; > probe.
   double max_probe_radius = 0;
-  // The cavity on the spectrum (from the dimension-2 persistence pair whose
-  // killing cell is the cavity's last cell to fill): it is a closed region
-  // of its own for close_alpha_sq <= alpha_sq < fill_alpha_sq; below
-  // close_alpha_sq it joins the outside or a larger cavity (the elder rule
-  // of persistence: then it may still be enclosed, together with that
-  // one). A void has close_alpha_sq <= 0; a pocket closes at some
-  // alpha_sq > 0 if its mouths seal before its cells fill, and has
+  // The cavity on the spectrum: it is cut off from the outside (no path of
+  // empty cells through absent triangles leads from any of its cells to
+  // the unbounded space) for close_alpha_sq <= alpha_sq, and filled for
+  // alpha_sq >= fill_alpha_sq. A void has close_alpha_sq <= 0 (how far the
+  // balls can shrink before it opens to the solvent); a pocket closes at
+  // some alpha_sq > 0 if its mouths seal before its cells fill, and has
   // close_alpha_sq == fill_alpha_sq if it never does.
   // fill_alpha_sq == max_alpha_sq (the last cell's size).
   double close_alpha_sq = 0;
