@@ -594,3 +594,20 @@ TEST_CASE("structure: structure file names", "[structure]") {
   for (const char* name : {"points.xyz", "a.gz", "pdb", "a.pdb.bz2", "a.cif.gz.txt"})
     CHECK_FALSE(molecule::is_structure_file(name));
 }
+
+TEST_CASE("structure: coordinates that are not numbers within 1e6 A name the atom", "[structure]") {
+  const std::string text = file_text(data("1UYD.cif"));
+  // The x coordinate of the first atom (" 6.484 " in its row) replaced.
+  const auto with_x = [&](const std::string& x) {
+    std::string cif = text;
+    const std::size_t at = cif.find(" 6.484 ");
+    REQUIRE(at != std::string::npos);
+    cif.replace(at, 7, " " + x + " ");
+    return cif;
+  };
+  const std::string atom = "x.cif: atom 1 (N of GLU A16): coordinate ";
+  CHECK(parse_error(with_x("1e20"), "x.cif").rfind(atom, 0) == 0);
+  CHECK(parse_error(with_x("-2e6"), "x.cif").rfind(atom, 0) == 0);
+  CHECK(parse_error(with_x("?"), "x.cif").rfind(atom + "nan", 0) == 0);
+  CHECK(molecule::parse_structure(with_x("999999.0"), "x.cif").atoms.front().position.x == 999999.0);
+}

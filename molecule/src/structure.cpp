@@ -1,6 +1,7 @@
 #include "molecule/structure.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <charconv>
 #include <map>
@@ -310,6 +311,18 @@ Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain
   return atom;
 }
 
+// Far beyond any structure (the largest assemblies span some 1e4 A), so a
+// coordinate beyond it, "?" or "." read as NaN, is a broken file.
+constexpr double kMaxCoordinate = 1e6;
+
+void check_position(const Atom& a, const std::string& name) {
+  for (const double x : {a.position.x, a.position.y, a.position.z})
+    if (!(std::fabs(x) <= kMaxCoordinate))
+      fail(name, "atom " + std::to_string(a.serial) + " (" + a.name + " of " + a.residue_name + " " + a.chain +
+                     std::to_string(a.seq_num) + "): coordinate " + std::to_string(x) +
+                     " is not a number within 1e6 A");
+}
+
 int model_number(const gemmi::Model& m) {
   int n = 0;
   std::from_chars(m.name.data(), m.name.data() + m.name.size(), n);
@@ -404,6 +417,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
             kept = true;
           if (!kept && !in_ligand) continue;
           Atom atom = make_atom(a, res, chain);
+          check_position(atom, name);
           atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
           if (kept) out.atoms.push_back(std::move(atom));
