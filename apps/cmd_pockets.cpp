@@ -110,8 +110,7 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
   for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
     const molecule::Site& s = sites[i];
     const molecule::Cavity& c = cavities.cavity(s);
-    const std::string cavity = (s.is_void ? "void " : "pocket ") + std::to_string(s.index + 1);
-    std::printf("%4zu  %-10s %7.3f %11.1f %8.1f %7zu  %s\n", i + 1, cavity.c_str(), c.score, c.sa_volume, c.depth,
+    std::printf("%4zu  %-10s %7.3f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(), c.score, c.sa_volume, c.depth,
                 c.mouths.size(), residue_list(structure.atoms, c, kSummaryWidth - prefix).c_str());
   }
   if (sites.size() > kSummaryRows)

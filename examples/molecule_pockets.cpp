@@ -42,14 +42,11 @@ int run(const std::string& file, const std::string& outdir) {
               cavities.tunnels.size());
   // The candidate binding sites: every pocket and each void large enough to
   // hold a drug-sized ligand, in one ranking.
-  const auto name_of = [](const molecule::Site& s) {
-    return (s.is_void ? "void " : "pocket ") + std::to_string(s.index + 1);
-  };
   for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.sites.size()); ++i) {
     const molecule::Cavity& c = cavities.cavity(cavities.sites[i]);
     const auto residues = molecule::residues_of(structure.atoms, c.lining_atoms);
     std::printf("site %zu (%s): score %.2f, %zu mouth(s), depth %.1f A, %zu lining residues, first %s\n", i + 1,
-                name_of(cavities.sites[i]).c_str(), c.score, c.mouths.size(), c.depth, residues.size(),
+                molecule::site_cavity_name(cavities.sites[i]).c_str(), c.score, c.mouths.size(), c.depth, residues.size(),
                 molecule::residue_id(structure.atoms[residues[0]]).c_str());
   }
 
@@ -61,7 +58,7 @@ int run(const std::string& file, const std::string& outdir) {
       const alpha::Vec3 center = cavities.cavity(cavities.sites[i]).center;
       const auto near = [&](const molecule::Atom& a) { return distance(a.position, center) <= 4.0; };
       if (std::any_of(ligand.atoms.begin(), ligand.atoms.end(), near)) {
-        where = "in site " + std::to_string(i + 1) + " (" + name_of(cavities.sites[i]) + ")";
+        where = "in site " + std::to_string(i + 1) + " (" + molecule::site_cavity_name(cavities.sites[i]) + ")";
         break;
       }
     }

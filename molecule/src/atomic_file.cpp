@@ -74,23 +74,31 @@ void TemporaryFile::commit() {
   path_.clear();
 }
 
+namespace {
+
+// The content in tmp, the temporary file of path (not yet renamed).
+void fill(const TemporaryFile& tmp, const std::string& path, std::string_view content) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
+  std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
+  if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
+  out.write(content.data(), std::streamsize(content.size()));
+  out.close();
+  if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
+}
+
+}  // namespace
+
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
   std::deque<TemporaryFile> staged;  // never moved: a deque does not relocate
-  for (const auto& [path, content] : files) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
-    const TemporaryFile& tmp = staged.emplace_back(path);
-    std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-    if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
-    out.write(content.data(), std::streamsize(content.size()));
-    out.close();
-    if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
-  }
+  for (const auto& [path, content] : files) fill(staged.emplace_back(path), path, content);
   for (TemporaryFile& tmp : staged) tmp.commit();
 }
 
 void write_file_atomically(const std::string& path, std::string_view content) {
-  write_files_atomically({{path, std::string(content)}});
+  TemporaryFile tmp(path);
+  fill(tmp, path, content);
+  tmp.commit();
 }
 
 }  // namespace molecule

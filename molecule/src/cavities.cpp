@@ -12,7 +12,6 @@
 #include "alpha/discrete_flow.hpp"
 #include "alpha/error.hpp"
 #include "alpha/persistent_basins.hpp"
-#include "alpha/sizes.hpp"
 #include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
 
@@ -87,17 +86,6 @@ std::vector<Mouth> group_mouths(const alpha::Simplices& s, const std::vector<Ope
   return mouths;
 }
 
-// The radius of the largest probe at a place where the balls of `atoms`,
-// grown to sqrt((r_i + probe)^2 + alpha_sq), just meet (see
-// Tunnel::bottleneck_radius): min over them of sqrt((r_i + probe)^2 +
-// alpha_sq) - r_i.
-template <class Atoms>
-double probe_radius(const Atoms& atoms, const std::vector<double>& radii, double probe, double alpha_sq) {
-  double radius = std::numeric_limits<double>::infinity();
-  for (Index i : atoms) radius = std::min(radius, std::sqrt(ball_weight(radii[i], probe) + alpha_sq) - radii[i]);
-  return radius;
-}
-
 // A 1-cycle alive at the level, as a tunnel (see Tunnel::bottleneck_radius).
 Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& p, const std::vector<double>& radii,
                    double probe) {
@@ -106,7 +94,11 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
   tn.death_alpha_sq = ac.spectrum_value(p.death);
   tn.bottleneck_triangle = p.death_simplex;
   const auto& tri = ac.simplices().triangle(p.death_simplex);
-  tn.bottleneck_radius = probe_radius(tri, radii, probe, tn.death_alpha_sq);
+  tn.bottleneck_radius = std::numeric_limits<double>::infinity();
+  for (Index i : tri) {
+    const double grown_sq = ball_weight(radii[i], probe) + tn.death_alpha_sq;
+    tn.bottleneck_radius = std::min(tn.bottleneck_radius, std::sqrt(grown_sq) - radii[i]);
+  }
   tn.lining_atoms.assign(tri.begin(), tri.end());
   std::sort(tn.lining_atoms.begin(), tn.lining_atoms.end());
   return tn;
@@ -144,7 +136,7 @@ class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
-        flow_(ac, level_), space_(ac), sizes_(t_.points().data(), t_.weighted() ? t_.weights().data() : nullptr),
+        flow_(ac, level_), space_(ac),
         cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)) {}
 
   Index level() const { return level_; }
@@ -192,22 +184,17 @@ private:
   Index level_;
   alpha::DiscreteFlow flow_;
   CavitySpace space_;
-  alpha::SizeKernel sizes_;  // for orthocentres
   std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
   std::vector<Index> sealed_from_;   // cell -> see sealed_from()
 
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
 
-  alpha::Simplex cell_simplex(Index c) const {
-    const auto& v = t_.cell(c).v;
-    return alpha::Simplex(v[0], v[1], v[2], v[3]);
-  }
-
   // Radius of the largest probe centred at x: its distance to the nearest
   // atom's van der Waals sphere.
   double clearance(const Vec3& x) const {
     double r = std::numeric_limits<double>::infinity();
-    for (Index i = 0; i < t_.num_points(); ++i) r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]);
+    for (Index i = 0; i < t_.num_points(); ++i)
+      r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]);
     return r;
   }
 
@@ -262,7 +249,7 @@ private:
 
     cav.max_alpha_sq = ac_.spectrum_value(ac_.cell_entry(last));
     cav.fill_alpha_sq = cav.max_alpha_sq;
-    cav.max_probe_radius = clearance(sizes_.center(cell_simplex(last)));
+    cav.max_probe_radius = clearance(ac_.size_kernel().center(alpha::Simplex(t_.cell(last).v)));
     Index sealed = 0;
     for (Index c : cells) sealed = std::max(sealed, sealed_from_[c]);
     cav.close_alpha_sq = ac_.spectrum_value(sealed);
@@ -306,6 +293,10 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
 }
 
 }  // namespace
+
+std::string site_cavity_name(const Site& site) {
+  return (site.is_void ? "void " : "pocket ") + std::to_string(site.index + 1);
+}
 
 Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
   check_input(ac, radii, options);

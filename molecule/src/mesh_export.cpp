@@ -202,14 +202,13 @@ void check_mesh_file_name(const std::string& path) {
   check_can_create(path);
 }
 
-std::string mesh_file_content(const std::string& path, const TriangleMesh& mesh, MeshFileInfo* info) {
+MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& mesh) {
   const Format* format = checked_format(path);
-  MeshFileInfo local;
-  MeshFileInfo& out_info = info ? *info : local;
-  out_info = {};
-  out_info.format = format->name;
-  out_info.binary = format->binary;
-  out_info.colors = format->colors && !mesh.face_colors.empty();
+  MeshFileContent file;
+  MeshFileInfo& info = file.info;
+  info.format = format->name;
+  info.binary = format->binary;
+  info.colors = format->colors && !mesh.face_colors.empty();
 
   check_input(path, mesh);
   std::ostringstream out(std::ios::binary);
@@ -218,22 +217,22 @@ std::string mesh_file_content(const std::string& path, const TriangleMesh& mesh,
     static std::mutex openmesh;
     const std::scoped_lock lock(openmesh);
     const QuietOpenMesh quiet;
-    const Mesh om = build_mesh(path, mesh, out_info.colors, out_info);
+    const Mesh om = build_mesh(path, mesh, info.colors, info);
     OpenMesh::IO::Options options;
     if (format->binary) options += OpenMesh::IO::Options::Binary;
     if (format->binary) options += OpenMesh::IO::Options::LSB;
-    if (out_info.colors) options += OpenMesh::IO::Options::FaceColor;
+    if (info.colors) options += OpenMesh::IO::Options::FaceColor;
     if (!OpenMesh::IO::write_mesh(om, out, std::string(".") + format->name, options, kAsciiPrecision) || !out)
       alpha::fail(path + ": write error (" + format->name + ")");
   }
-  return std::move(out).str();
+  file.bytes = std::move(out).str();
+  return file;
 }
 
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {
-  MeshFileInfo info;
-  const std::string content = mesh_file_content(path, mesh, &info);
-  write_file_atomically(path, content);
-  return info;
+  const MeshFileContent file = mesh_file_content(path, mesh);
+  write_file_atomically(path, file.bytes);
+  return file.info;
 }
 
 }  // namespace molecule

@@ -65,7 +65,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   files.emplace_back("pockets.pdb", std::move(pdb.text));
   if (!run.mesh_format.empty()) {
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
-      files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh));
+      files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh).bytes);
     };
     const CavityColors colors = cavity_colors(cavities);
     const auto meshes = [&](const std::vector<Cavity>& list, const std::vector<Rgb>& color, const std::string& kind) {

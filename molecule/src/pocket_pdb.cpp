@@ -49,7 +49,7 @@ private:
 
 PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
   const alpha::Triangulation& t = ac.triangulation();
-  const alpha::SizeKernel sizes(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
+  const alpha::SizeKernel sizes = ac.size_kernel();
 
   HetatmWriter pdb;
   const auto write = [&](const std::vector<Cavity>& list, char chain) {
@@ -57,8 +57,7 @@ PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, co
       const Cavity& cavity = list[i];
       pdb.hetatm(" CEN", chain, i + 1, cavity.center, 0);
       for (const alpha::Index c : cavity.sinks) {
-        const auto& v = t.cell(c).v;
-        const alpha::Simplex tetra(v[0], v[1], v[2], v[3]);
+        const alpha::Simplex tetra(t.cell(c).v);
         pdb.hetatm(" SNK", chain, i + 1, sizes.center(tetra), std::sqrt(std::fmax(sizes.size(tetra).value, 0.0)));
       }
     }

@@ -1,8 +1,8 @@
 #include "molecule/structure.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <charconv>
 #include <map>
 #include <span>
@@ -264,6 +264,11 @@ bool only_other_conformers(const gemmi::Residue& r, char chosen) {
                      [&](const gemmi::Atom& a) { return a.altloc && a.altloc != chosen; });
 }
 
+// "CA of GLY A16", for messages.
+std::string describe(const Atom& a) {
+  return a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
+}
+
 // Radii per atom, with one warning per element that gets the default;
 // warnings count only the atoms kept (`kept`), the ones a caller uses.
 class RadiusAssigner {
@@ -273,7 +278,7 @@ public:
     if (kept && r.source == RadiusSource::Default) {
       Unknown& u = unknown_[a.element];
       if (u.atoms++ == 0)
-        u.first = "atom " + a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
+        u.first = "atom " + describe(a);
     }
     return r.value;
   }
@@ -318,8 +323,7 @@ constexpr double kMaxCoordinate = 1e6;
 void check_position(const Atom& a, const std::string& name) {
   for (const double x : {a.position.x, a.position.y, a.position.z})
     if (!(std::fabs(x) <= kMaxCoordinate))
-      fail(name, "atom " + std::to_string(a.serial) + " (" + a.name + " of " + a.residue_name + " " + a.chain +
-                     std::to_string(a.seq_num) + "): coordinate " + std::to_string(x) +
+      fail(name, "atom " + std::to_string(a.serial) + " (" + describe(a) + "): coordinate " + std::to_string(x) +
                      " is not a number within 1e6 A");
 }
 

@@ -62,6 +62,8 @@ public:
   // rank is below this level are present at alpha_sq. Throws alpha::Error
   // for NaN.
   Index level(double alpha_sq) const;
+  // Exact sizes and orthocentres of simplices of this complex's points.
+  SizeKernel size_kernel() const;
 
   // Interval records, returned by value: they are stored by field.
   Interval vertex_interval(Index v) const {
@@ -121,7 +123,6 @@ private:
   std::unique_ptr<LazyPairs> pairs_ = std::make_unique<LazyPairs>();  // a pointer: keeps the class movable
   SizeStats size_stats_;
 
-  SizeKernel size_kernel() const;
   Simplex simplex(Index global_id) const;
   // Construction: the attached flags, the entry ranks of the simplices that
   // enter at their own size, and the spectrum; then the bounds of the faces

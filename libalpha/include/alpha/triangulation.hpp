@@ -44,8 +44,9 @@ public:
   // Throws alpha::Error for unusable input: non-finite or out-of-range
   // values (|coordinate| > 1e15, |weight| > 1e30, points spanning less
   // than 1e-100), weights not matching points, fewer than 4 distinct
-  // points, all points collinear or coplanar. Duplicates are merged: the point with the
-  // largest weight (then the smallest index) represents the others.
+  // points, all points collinear or coplanar. Duplicates are merged: the
+  // point with the largest weight (then the smallest index) represents the
+  // others.
   explicit Triangulation(std::vector<Vec3> points, std::vector<double> weights = {});
 
   // Input points.

@@ -138,6 +138,9 @@ struct Site {
   std::size_t index = 0;  // into Cavities::pockets, or Cavities::voids if is_void
 };
 
+// "pocket 3", "void 1": the cavity a site is, by its rank in its list.
+std::string site_cavity_name(const Site& site);
+
 struct Cavities {
   // The whole molecule's solvent-accessible model: area and volume of the
   // union of the probe-inflated balls (the union the cavities' shares are

@@ -78,10 +78,13 @@ void check_mesh_file_name(const std::string& path);
 // match, or a failed write.
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh);
 
-// The bytes write_mesh_file would write to path, in memory (path only
-// chooses the format and names the file in errors); `info`, if given,
-// receives what write_mesh_file returns. For callers that write several
-// files as one (write_files_atomically).
-std::string mesh_file_content(const std::string& path, const TriangleMesh& mesh, MeshFileInfo* info = nullptr);
+// What write_mesh_file would write to path, in memory (path only chooses
+// the format and names the file in errors), and what it would return. For
+// callers that write several files as one (write_files_atomically).
+struct MeshFileContent {
+  std::string bytes;
+  MeshFileInfo info;
+};
+MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& mesh);
 
 }  // namespace molecule
