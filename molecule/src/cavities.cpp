@@ -155,15 +155,16 @@ public:
         for (int k = 0; k < 4; ++k)
           if (flow_.outside(t_.cell(c).n[k]) && empty(s_.cell_triangle(c, k)))
             region_mouths.push_back(s_.cell_triangle(c, k));
+      const RegionSpace space{cells, space_};
       if (region_mouths.empty()) {
         for (Index c : cells) cavity_of_[c] = next_id;
         ++next_id;
-        keep(out.voids, build(cells, region_mouths));
+        keep(out.voids, cells, space, region_mouths);
         continue;
       }
       std::vector<double> free_volume;
       free_volume.reserve(cells.size());
-      for (Index c : cells) free_volume.push_back(std::max(0.0, space_.cell(c).sa_empty));
+      for (const CellSpace& m : space.cells) free_volume.push_back(std::max(0.0, m.sa_empty));
       const auto basins = alpha::persistent_basins(
           ac_, level_, cells,
           {options_.split_persistence, free_volume, options_.split_min_volume, options_.split_volume});
@@ -171,7 +172,7 @@ public:
         for (Index c : basin) cavity_of_[c] = next_id;
         ++next_id;
       }
-      for (const auto& basin : basins) keep(out.pockets, build(basin, region_mouths));
+      for (const auto& basin : basins) keep(out.pockets, basin, space, region_mouths);
     }
   }
 
@@ -198,19 +199,37 @@ private:
     return r;
   }
 
-  void keep(std::vector<Cavity>& list, Cavity&& c) const {
-    if (c.sa_volume >= options_.min_volume) list.push_back(std::move(c));
+  // The empty space of a region's cells (sorted), each computed once for
+  // the size rule's masses and the measures of the region's cavities.
+  struct RegionSpace {
+    const std::vector<Index>& ids;
+    std::vector<CellSpace> cells;
+    RegionSpace(const std::vector<Index>& region, const CavitySpace& space) : ids(region) {
+      cells.reserve(region.size());
+      for (Index c : region) cells.push_back(space.cell(c));
+    }
+    const CellSpace& operator[](Index c) const {
+      return cells[std::lower_bound(ids.begin(), ids.end(), c) - ids.begin()];
+    }
+  };
+
+  // Appends the cavity of `cells` (sorted, all numbered alike in
+  // cavity_of_, within the region of `space`, whose triangles to the
+  // outside are `region_mouths`) if it holds at least min_volume; the
+  // measures that scan all atoms or all mouths are taken only then.
+  void keep(std::vector<Cavity>& list, const std::vector<Index>& cells, const RegionSpace& space,
+            const std::vector<Index>& region_mouths) const {
+    double sa_volume = 0;
+    for (Index c : cells) sa_volume += space[c].sa_empty;
+    if (std::max(0.0, sa_volume) >= options_.min_volume) list.push_back(build(cells, space, region_mouths));
   }
 
-  // One cavity: `cells` sorted, all numbered alike in cavity_of_;
-  // `region_mouths`: the triangles of its region to the outside.
-  Cavity build(const std::vector<Index>& cells, const std::vector<Index>& region_mouths) const {
+  Cavity build(const std::vector<Index>& cells, const RegionSpace& space,
+               const std::vector<Index>& region_mouths) const {
     Cavity cav;
     cav.cells = cells;
     const Index id = cavity_of_[cells.front()];
     std::vector<Opening> openings;
-    std::vector<CellSpace> space;
-    space.reserve(cells.size());
     Index last = cells.front();
     Vec3 weighted{};
     double total_weight = 0;
@@ -226,7 +245,7 @@ private:
       // The last cell to fill; ties as in the persistence pairs (the elder
       // of a complement component is its largest cell by rank, then id).
       if (ac_.cell_entry(c) >= ac_.cell_entry(last)) last = c;
-      const CellSpace& m = space.emplace_back(space_.cell(c));
+      const CellSpace& m = space[c];
       cav.sa_volume += m.sa_empty;
       cav.sa_area += m.sa_area;
       const double weight = std::max(0.0, m.sa_empty);
@@ -238,7 +257,7 @@ private:
     cav.sa_area = std::max(0.0, cav.sa_area);
     cav.center = total_weight > 0
                      ? Vec3{weighted.x / total_weight, weighted.y / total_weight, weighted.z / total_weight}
-                     : space.front().centroid;
+                     : space[cells.front()].centroid;
     std::sort(cav.lining_atoms.begin(), cav.lining_atoms.end());
     cav.lining_atoms.erase(std::unique(cav.lining_atoms.begin(), cav.lining_atoms.end()), cav.lining_atoms.end());
 
@@ -262,7 +281,7 @@ private:
     for (std::size_t k = 0; k < cells.size() && !region_mouths.empty(); ++k) {
       const auto distance = [&](std::size_t m) {
         const auto& fv = s_.triangle(region_mouths[m]);
-        return point_triangle_distance(space[k].centroid, t_.point(fv[0]), t_.point(fv[1]), t_.point(fv[2]));
+        return point_triangle_distance(space[cells[k]].centroid, t_.point(fv[0]), t_.point(fv[1]), t_.point(fv[2]));
       };
       double nearest = distance(hint);
       for (std::size_t m = 0; m < region_mouths.size() && nearest > cav.depth; ++m) {
