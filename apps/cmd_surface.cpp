@@ -1,4 +1,4 @@
-// alphapocket surface FILE [--probe R] [--json] [--per-atom]
+// alphapocket surface FILE [--probe R] [--json] [--per-atom] [--sa-only]
 //
 // Solvent-accessible surface (SAS) area and volume of a molecule: the union
 // of its atom balls, radius = ProtOr radius + probe, measured analytically
@@ -7,7 +7,10 @@
 // Shrake-Rupley points). With --per-atom, the SAS area of every atom. A
 // point file with --weighted gives the union of its balls.
 //
-// The solvent-excluded (molecular) volume is not computed yet: it is null.
+// For a structure, also the solvent-excluded (molecular, Connolly) surface:
+// the SAS union eroded by the probe (alpha::ErodedUnion); null for a point
+// file, whose balls carry no probe, and with --sa-only (it takes several
+// times as long as the SAS).
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -19,6 +22,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "alpha/eroded_union.hpp"
 #include "alpha/input_file.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "commands.hpp"
@@ -33,6 +37,7 @@ struct SurfaceOptions {
   InputOptions input;
   bool json = false;
   bool per_atom = false;
+  bool sa_only = false;
 };
 
 // The balls of FILE, and for a structure file its atoms (names for
@@ -81,6 +86,14 @@ int run_surface(const SurfaceOptions& opt) {
                build_seconds, measure_time.seconds(), t->num_hidden());
   const auto areas = u.ball_areas();
   const bool structure = balls.atoms.has_value();
+  std::optional<alpha::LayerShare> excluded;  // the eroded union's volume and area
+  if (structure && !opt.sa_only) {
+    Stopwatch ses_time;
+    const alpha::LayerShare layer = alpha::ErodedUnion(u, opt.input.probe).layer();
+    excluded = alpha::LayerShare{u.volume() - layer.volume, layer.area};
+    spdlog::info("solvent-excluded surface: {:.3f} s", ses_time.seconds());
+  }
+  const auto or_null = [&](double x) { return excluded ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr); };
 
   if (opt.json) {
     nlohmann::ordered_json j;
@@ -88,7 +101,8 @@ int run_surface(const SurfaceOptions& opt) {
     j["probe"] = structure ? nlohmann::ordered_json(opt.input.probe) : nlohmann::ordered_json(nullptr);
     j["sa_area"] = u.area();
     j["sa_volume"] = u.volume();
-    j["ms_volume"] = nullptr;
+    j["ms_volume"] = or_null(excluded ? excluded->volume : 0);
+    j["ms_area"] = or_null(excluded ? excluded->area : 0);
     j["radii"] = structure ? std::string(molecule::kRadiusTable) : std::string("file");
     if (opt.per_atom) {
       j["per_atom"] = nlohmann::ordered_json::array();
@@ -110,10 +124,13 @@ int run_surface(const SurfaceOptions& opt) {
                                                           opt.input.probe)
                                             : std::string("radii from the file"))
                           .c_str());
-    std::printf("%s", fmt::format("solvent-accessible area    {:.3f} A^2\nsolvent-accessible volume  {:.3f} A^3\n"
-                                  "solvent-excluded volume    not computed\n",
+    std::printf("%s", fmt::format("solvent-accessible area    {:.3f} A^2\nsolvent-accessible volume  {:.3f} A^3\n",
                                   u.area(), u.volume())
                           .c_str());
+    if (excluded)
+      std::printf("%s", fmt::format("solvent-excluded area      {:.3f} A^2\nsolvent-excluded volume    {:.3f} A^3\n",
+                                    excluded->area, excluded->volume)
+                            .c_str());
     if (opt.per_atom) {
       std::printf("%s", structure ? "serial name residue seq_num chain area\n" : "index area\n");
       for (std::size_t i = 0; i < n; ++i) {
@@ -138,11 +155,15 @@ Subcommand add_surface_command(CLI::App& app) {
   auto opt = std::make_shared<SurfaceOptions>();
   CLI::App* sub = app.add_subcommand(
       "surface",
-      "Solvent-accessible surface area and volume of the union of the atom balls (ProtOr radius + probe), "
-      "analytically from the weighted alpha complex; per atom with --per-atom");
+      "Solvent-accessible (SAS) and solvent-excluded (molecular) surface area and volume of a structure: the union "
+      "of its atom balls (ProtOr radius + probe) and that union eroded by the probe, from the weighted alpha "
+      "complex; SAS area per atom with --per-atom");
   add_input_options(*sub, opt->input);
   sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
   sub->add_flag("--per-atom", opt->per_atom, "Also print the SAS area of every atom (ball)");
+  sub->add_flag("--sa-only", opt->sa_only,
+                "Skip the solvent-excluded (molecular) surface, which takes several times as long as the SAS: "
+                "ms_volume and ms_area are null");
   return {sub, [opt] { return run_surface(*opt); }};
 }
 

@@ -71,7 +71,7 @@ printf '%-12s %6s %12s %9s | %8s %8s %7s | %5s %8s %7s | %7s %7s\n' \
   file atoms "area A^2" ours "t_ours" "t_fs20" "err20" "n*" "t_fs_n*" "err_n*" "x20" "x_n*"
 for f in "${files[@]}"; do
   name=$(basename "$f")
-  json=$("$exe" -q surface "$f" --json 2>/dev/null)
+  json=$("$exe" -q surface "$f" --json --sa-only 2>/dev/null)
   ours=$(grep -o '"sa_area":[^,]*' <<<"$json" | cut -d: -f2)
   atoms=$(grep -o '"atoms":[^,]*' <<<"$json" | cut -d: -f2)
   if [[ $atoms -ne $(freesasa_atoms "$f") ]]; then
@@ -91,7 +91,7 @@ for f in "${files[@]}"; do
   done
   shown=$nstar
   [[ -z $nstar ]] && nstar=${ladder[-1]} errstar=$e shown=">${ladder[-1]}"
-  t_ours=$(median_time "$exe" -q surface "$f" --json)
+  t_ours=$(median_time "$exe" -q surface "$f" --json --sa-only)
   t_fs20=$(median_time freesasa --lee-richards --resolution=20 -t 1 "$f")
   t_fsn=$(median_time freesasa --lee-richards --resolution="$nstar" -t 1 "$f")
   printf '%-12s %6d %12.3f %9s | %8.4f %8.4f %7s | %5s %8.4f %7s | %7.1f %7.1f\n' \

@@ -14,6 +14,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/discrete_flow.hpp"
+#include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
 #include "alpha/sizes.hpp"
 #include "alpha/union_of_balls.hpp"
@@ -130,6 +131,8 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     CHECK(c.sa_volume >= 0);
     CHECK(c.sa_volume <= volume * (1 + 1e-9));
     CHECK(c.sa_area >= 0);
+    CHECK(c.ms_volume >= c.sa_volume);
+    CHECK(c.ms_area >= 0);
     CHECK(c.max_alpha_sq > 0);
     CHECK(c.fill_alpha_sq == c.max_alpha_sq);
     // The probe at the orthocentre of the last cell to fill, against every atom.
@@ -254,6 +257,21 @@ TEST_CASE("Cavities: a hollow shell of balls holds exactly one void", "[cavities
       }
   CHECK(v.sa_volume == Approx(free_volume).epsilon(0.02));
   CHECK(v.sa_area > 0);
+  // Its molecular-surface volume adds the probe layer under its wall: the
+  // layer of the whole shell less that of the shell filled by a ball that
+  // stays inside (the outer layer is the same).
+  const auto layer = [&](bool filled) {
+    std::vector<Vec3> p = b.points;
+    std::vector<double> w = Balls::inflated(b.radii, probe);
+    if (filled) p.push_back({0, 0, 0}), w.push_back(R * R);
+    const alpha::Triangulation t(p, w);
+    const alpha::AlphaComplex ac(t);
+    const alpha::UnionOfBalls u(ac);
+    return alpha::ErodedUnion(u, probe).layer();
+  };
+  const alpha::LayerShare hollow = layer(false), filled = layer(true);
+  CHECK(v.ms_volume - v.sa_volume == Approx(hollow.volume - filled.volume).epsilon(1e-6));
+  CHECK(v.ms_area == Approx(hollow.area - filled.area).epsilon(1e-6));
 }
 
 TEST_CASE("Cavities: a shell with a hole is one pocket with one mouth", "[cavities]") {

@@ -124,11 +124,10 @@ void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavit
     const json& p = list[i];
     INFO(kind << " " << i + 1);
     CHECK(p["rank"] == i + 1);
-    for (const char* key : {"score", "sa_volume", "sa_area", "mouth_area", "buriedness", "burial_atoms", "depth",
-                            "tetrahedra", "max_probe_radius"})
+    for (const char* key : {"score", "sa_volume", "sa_area", "ms_volume", "ms_area", "mouth_area", "buriedness",
+                            "burial_atoms", "depth", "tetrahedra", "max_probe_radius"})
       check_number(p, key);
-    for (const char* key : {"ms_volume", "ms_area"})  // null: not computed
-      if (!p.at(key).is_null()) check_number(p, key);
+    CHECK(p["ms_volume"].get<double>() >= p["sa_volume"].get<double>());
     CHECK(p["mouths_to_outside"].get<std::size_t>() <= p["mouths"].get<std::size_t>());
     for (const char* key : {"max_alpha_sq", "close_alpha_sq", "fill_alpha_sq"}) check_number(p, key, false);
     if (i > 0) CHECK(p["score"].get<double>() <= list[i - 1]["score"].get<double>());
@@ -265,7 +264,8 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
     CHECK(std::stoul(f[0]) == i);
     CHECK(std::stod(f[1]) == p["score"].get<double>());
     CHECK(std::stod(f[2]) == p["sa_volume"].get<double>());  // the same text
-    CHECK(f[3].empty() == p["ms_volume"].is_null());
+    CHECK(std::stod(f[3]) == p["ms_volume"].get<double>());
+    CHECK(std::stod(f[5]) == p["ms_area"].get<double>());
     CHECK(std::stoul(f[6]) == p["mouths"].get<std::size_t>());
     CHECK(std::stod(f[9]) == p["center"][0].get<double>());
     CHECK(std::stoul(f[12]) == p["lining_residues"].size());

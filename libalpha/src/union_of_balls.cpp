@@ -8,26 +8,12 @@
 #include <string>
 
 #include "alpha/error.hpp"
+#include "compensated_sum.hpp"
 
 namespace alpha {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Neumaier's compensated sum: the error does not grow with the number of
-// terms, and a fixed order of additions makes the result deterministic.
-class Sum {
-public:
-  void add(double x) {
-    const double t = s_ + x;
-    c_ += std::fabs(s_) >= std::fabs(x) ? (s_ - t) + x : (x - t) + s_;
-    s_ = t;
-  }
-  double value() const { return s_ + c_; }
-
-private:
-  double s_ = 0, c_ = 0;
-};
 
 // A ball relative to the first vertex of its simplex: p is p_v - p_first.
 struct Ball {
@@ -65,11 +51,6 @@ struct SimplexTerms {
     for (int i = 0; i < N; ++i) v.add(b[i].r * area[i]);
     for (std::size_t e = 0; e < face.size(); ++e) v.add(-length[e] * face[e]);
     volume = v.value() / 3;
-  }
-  double total_area() const {
-    Sum a;
-    for (double x : area) a.add(x);
-    return a.value();
   }
 };
 
@@ -230,15 +211,6 @@ SimplexTerms<4> tetrahedron_terms(const std::array<Ball, 4>& b, const std::array
   return t;
 }
 
-// Solid angle of tetrahedron (a, b, c, d) at a (Van Oosterom & Strackee).
-double solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Vec3 x = b - a, y = c - a, z = d - a;
-  const double lx = norm(x), ly = norm(y), lz = norm(z);
-  const double num = std::fabs(dot(x, cross(y, z)));
-  const double den = lx * ly * lz + dot(x, y) * lz + dot(x, z) * ly + dot(y, z) * lx;
-  return 2 * std::atan2(num, den);
-}
-
 // Dihedral angle of tetrahedron (a, b, c, d) at edge ab.
 double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 e = b - a;
@@ -301,7 +273,7 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     kept[e] = 1;
     for (int k = 0; k < 2; ++k) area[s.edge(e)[k]].add(-lens.area[k]);
     facet[e].add(lens.face[0]);
-    edge_term_[e] = {lens.volume, lens.total_area()};
+    edge_term_[e] = {lens.volume, lens.area};
   }
   std::vector<std::array<double, 3>> corner(s.num_triangles());  // by triangle(f) order
   for (Index f = 0; f < s.num_triangles(); ++f) {
@@ -314,7 +286,7 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     for (int k = 0; k < 3; ++k) area[v[k]].add(tt.area[k]);
     for (int e = 0; e < 3; ++e) facet[edge_among(fe, v[kTriangleEdge[e][0]], v[kTriangleEdge[e][1]])].add(-tt.face[e]);
     corner[f] = tt.corner;
-    triangle_term_[f] = {tt.volume, tt.total_area()};
+    triangle_term_[f] = {tt.volume, tt.area};
   }
   for (Index c = 0; c < t.num_cells(); ++c) {
     std::array<Ball, 4> b;
@@ -336,7 +308,7 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     const SimplexTerms<4> tt = tetrahedron_terms(b, cell_corner);
     for (int k = 0; k < 4; ++k) area[v[k]].add(-tt.area[k]);
     for (int e = 0; e < 6; ++e) facet[ce[e]].add(tt.face[e]);
-    cell_term_[c] = {tt.volume, tt.total_area()};
+    cell_term_[c] = {tt.volume, tt.area};
   }
 
   // Per ball volume (r_i A_i + sum_j h_ij F_ij) / 3: the divergence theorem
@@ -373,6 +345,15 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
 }
 
 CellCover UnionOfBalls::cell_cover(Index c) const {
+  return cover(c, [](Index) { return 1.0; });
+}
+
+double UnionOfBalls::cell_area(Index c, std::span<const double> ball_factor) const {
+  return cover(c, [&](Index i) { return ball_factor[i]; }).area;
+}
+
+template <class Factor>
+CellCover UnionOfBalls::cover(Index c, Factor factor) const {
   const Triangulation& t = complex_->triangulation();
   const Simplices& s = complex_->simplices();
   if (t.is_infinite(c)) return {};
@@ -380,24 +361,30 @@ CellCover UnionOfBalls::cell_cover(Index c) const {
   std::array<Vec3, 4> p;
   for (int k = 0; k < 4; ++k) p[k] = t.point(v[k]);
   Sum volume, area;
-  auto add = [&](const Term& term, double fraction) {
+  // A term of the simplex with vertices `sv`, times the cell's fraction.
+  auto add = [&]<std::size_t N>(const Term<N>& term, const std::array<Index, N>& sv, double fraction) {
     volume.add(fraction * term.volume);
-    area.add(fraction * term.area);
+    for (std::size_t k = 0; k < N; ++k) area.add(fraction * factor(sv[k]) * term.area[k]);
   };
   for (int k = 0; k < 4; ++k) {
     if (!in_dual_complex_vertex(v[k])) continue;
     const double w = t.weight(v[k]);
-    const Term ball{4 * kPi / 3 * w * std::sqrt(w), 4 * kPi * w};
-    add(ball, solid_angle(p[k], p[(k + 1) % 4], p[(k + 2) % 4], p[(k + 3) % 4]) / (4 * kPi));
+    const Term<1> ball{4 * kPi / 3 * w * std::sqrt(w), {4 * kPi * w}};
+    add(ball, std::array<Index, 1>{v[k]},
+        solid_angle(p[k], p[(k + 1) % 4], p[(k + 2) % 4], p[(k + 3) % 4]) / (4 * kPi));
   }
   for (int e = 0; e < 6; ++e) {
     const int x = kEdge[e][0], y = kEdge[e][1];
-    const Term& lens = edge_term_[s.find_edge(v[x], v[y])];
-    if (lens.volume == 0 && lens.area == 0) continue;
-    add(lens, -dihedral_angle(p[x], p[y], p[kEdgeOthers[e][0]], p[kEdgeOthers[e][1]]) / (2 * kPi));
+    const Index id = s.find_edge(v[x], v[y]);
+    const Term<2>& lens = edge_term_[id];
+    if (lens.volume == 0 && lens.area[0] == 0 && lens.area[1] == 0) continue;
+    add(lens, s.edge(id), -dihedral_angle(p[x], p[y], p[kEdgeOthers[e][0]], p[kEdgeOthers[e][1]]) / (2 * kPi));
   }
-  for (int k = 0; k < 4; ++k) add(triangle_term_[s.cell_triangle(c, k)], 0.5);
-  add(cell_term_[c], -1.0);
+  for (int k = 0; k < 4; ++k) {
+    const Index f = s.cell_triangle(c, k);
+    add(triangle_term_[f], s.triangle(f), 0.5);
+  }
+  add(cell_term_[c], v, -1.0);
   return {volume.value(), area.value()};
 }
 

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "alpha/discrete_flow.hpp"
+#include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
 #include "alpha/persistent_basins.hpp"
 #include "molecule/atom_balls.hpp"
@@ -136,7 +137,7 @@ class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
-        flow_(ac, level_), space_(ac),
+        flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
         cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)) {}
 
   Index level() const { return level_; }
@@ -185,6 +186,7 @@ private:
   Index level_;
   alpha::DiscreteFlow flow_;
   CavitySpace space_;
+  alpha::ErodedUnion excluded_;  // the solvent-excluded body: the SA union eroded by the probe
   std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
   std::vector<Index> sealed_from_;   // cell -> see sealed_from()
 
@@ -252,9 +254,19 @@ private:
       weighted = weighted + weight * m.centroid;
       total_weight += weight;
     }
+    // The probe layer between the SA and the molecular surface whose
+    // nearest solvent-accessible point lies on the cavity's wall.
+    alpha::LayerShare layer;
+    for (Index c : cells) {
+      const alpha::LayerShare share = excluded_.cell_share(c);
+      layer.volume += share.volume;
+      layer.area += share.area;
+    }
     // Fractional shares are exact only in sum: keep the sums, not below 0.
     cav.sa_volume = std::max(0.0, cav.sa_volume);
     cav.sa_area = std::max(0.0, cav.sa_area);
+    cav.ms_volume = std::max(cav.sa_volume, cav.sa_volume + layer.volume);
+    cav.ms_area = std::max(0.0, layer.area);
     cav.center = total_weight > 0
                      ? Vec3{weighted.x / total_weight, weighted.y / total_weight, weighted.z / total_weight}
                      : space[cells.front()].centroid;

@@ -123,11 +123,8 @@ json tunnel_list(const PocketRun& run) {
 }
 
 // A number as report.json has it (the shortest text that reads back the
-// same), empty when it was not computed (NaN).
-std::string csv_number(double x) {
-  if (std::isnan(x)) return {};
-  return json(x).dump();
-}
+// same).
+std::string csv_number(double x) { return json(x).dump(); }
 
 // A CSV field: quoted (quotes doubled) when it holds a separator, a quote
 // or a line break.

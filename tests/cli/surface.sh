@@ -34,10 +34,11 @@ case $case_name in
     expect_json_object
     expect_json atoms 2769
     expect_json probe 1.4
-    expect_json ms_volume null
     expect_json radii '"ProtOr"'
     expect_rounded sa_area 1 16564.3
     expect_rounded sa_volume 1 67402.5
+    expect_rounded ms_area 1 15581.7
+    expect_rounded ms_volume 1 44936.0
     grep -q per_atom "$tmp/out" && fail "per-atom areas without --per-atom"
     ;;
   summary)
@@ -46,7 +47,8 @@ case $case_name in
     grep -q '1a26A.pdb: 2769 atoms, ProtOr radii + probe 1.4 A' "$tmp/out" || fail "no header line"
     grep -q '^solvent-accessible area    16564.322 A^2$' "$tmp/out" || fail "no area line"
     grep -q '^solvent-accessible volume  67402.524 A^3$' "$tmp/out" || fail "no volume line"
-    grep -q '^solvent-excluded volume    not computed$' "$tmp/out" || fail "no excluded volume line"
+    grep -q '^solvent-excluded area      15581.669 A^2$' "$tmp/out" || fail "no excluded area line"
+    grep -q '^solvent-excluded volume    44935.999 A^3$' "$tmp/out" || fail "no excluded volume line"
     grep -q 'union of balls' "$tmp/err" || fail "timings not logged"
     ;;
   per_atom_json)
@@ -76,6 +78,27 @@ case $case_name in
     expect_json probe 0.0
     expect_rounded sa_area 1 36848.1
     expect_rounded sa_volume 1 32857.3
+    expect_rounded ms_area 1 36848.1  # eroded by 0: the same union
+    expect_rounded ms_volume 1 32857.3
+    ;;
+  sa_only)
+    run -q surface "$pdb" --json --sa-only
+    expect_json_object
+    expect_json ms_volume null
+    expect_json ms_area null
+    expect_rounded sa_volume 1 67402.5
+    ;;
+  excluded_between)
+    # The molecular body lies between the van der Waals union (probe 0)
+    # and the SAS union, and grows with the probe (fewer crevices reached).
+    run -q surface "$pdb" --probe 0 --json
+    vdw=$(json_value sa_volume)
+    run -q surface "$pdb" --probe 0.5 --json
+    small=$(json_value ms_volume)
+    run -q surface "$pdb" --json
+    ms=$(json_value ms_volume) sa=$(json_value sa_volume)
+    awk -v v="$vdw" -v s="$small" -v m="$ms" -v a="$sa" 'BEGIN { exit !(v < s && s < m && m < a) }' ||
+      fail "expected vdW $vdw < MS(0.5) $small < MS(1.4) $ms < SAS $sa"
     ;;
   deterministic)
     run -q surface "$pdb" --json --per-atom
@@ -88,6 +111,7 @@ case $case_name in
     expect_json_object
     expect_json atoms 4
     expect_json probe null
+    expect_json ms_volume null
     expect_json radii '"file"'
     expect_rounded sa_volume 10 "$(rounded 7.0685834705770345 10)"  # 9 pi / 4
     expect_rounded sa_area 10 "$(rounded 18.84955592153876 10)"     # 6 pi

@@ -24,6 +24,14 @@ inline double tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c, co
   return std::fabs(dot(b - a, cross(c - a, d - a))) / 6;
 }
 inline double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) { return norm(cross(b - a, c - a)) / 2; }
+// Solid angle of tetrahedron (a, b, c, d) at a (Van Oosterom & Strackee).
+inline double solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 x = b - a, y = c - a, z = d - a;
+  const double lx = norm(x), ly = norm(y), lz = norm(z);
+  const double num = std::fabs(dot(x, cross(y, z)));
+  const double den = lx * ly * lz + dot(x, y) * lz + dot(x, z) * ly + dot(y, z) * lx;
+  return 2 * std::atan2(num, den);
+}
 
 // Indices of points, vertices, cells, edges and triangles.
 using Index = std::uint32_t;

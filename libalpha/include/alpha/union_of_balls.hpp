@@ -55,6 +55,7 @@
 // changes results by less than 1e-11, and FreeSASA's Lee-Richards converges
 // to our protein areas (5e-8 at 16000 slices per atom).
 #pragma once
+#include <array>
 #include <span>
 #include <vector>
 
@@ -76,6 +77,7 @@ public:
   // reference to complex.
   explicit UnionOfBalls(const AlphaComplex& complex);
 
+  const AlphaComplex& complex() const { return *complex_; }
   double area() const { return area_; }
   double volume() const { return volume_; }
 
@@ -90,6 +92,11 @@ public:
   // zero for an infinite cell.
   CellCover cell_cover(Index c) const;
 
+  // The area part of cell_cover(c) with each ball's sphere scaled by
+  // ball_factor[i] (one per input point): e.g. the area of a surface made
+  // of the spheres' pieces shrunk about their centers.
+  double cell_area(Index c, std::span<const double> ball_factor) const;
+
   // Whether a simplex is in the dual complex K (alpha complex at 0).
   bool in_dual_complex_vertex(Index v) const;
   bool in_dual_complex_edge(Index e) const { return complex_->edge_interval(e).entry < level_; }
@@ -99,16 +106,22 @@ public:
   std::size_t memory_bytes() const;
 
 private:
-  // Volume and area of the intersection of the balls of one simplex of K
-  // (0 for simplices not in K).
+  // Volume of the intersection of the balls of one simplex of K, and per
+  // ball the area of its sphere inside the others (0 for simplices not in K).
+  template <std::size_t N>
   struct Term {
-    double volume = 0, area = 0;
+    double volume = 0;
+    std::array<double, N> area{};
   };
+  template <class Factor>
+  CellCover cover(Index c, Factor factor) const;
   const AlphaComplex* complex_;
   Index level_;  // simplices with entry rank below it are in K
   double area_ = 0, volume_ = 0;
   std::vector<double> ball_area_, ball_volume_;
-  std::vector<Term> edge_term_, triangle_term_, cell_term_;
+  std::vector<Term<2>> edge_term_;
+  std::vector<Term<3>> triangle_term_;
+  std::vector<Term<4>> cell_term_;
 };
 
 }  // namespace alpha

@@ -75,11 +75,12 @@ struct Cavity {
   double sa_volume = 0;
   double sa_area = 0;  // area of the probe-inflated spheres lining the cavity, A^2 (same split)
   // The same bounded by the molecular (solvent-excluded) surface instead of
-  // the SA surface: NOT COMPUTED yet (quiet NaN). It needs the Connolly
-  // surface's toroidal and reentrant patches, where reentrant patches of
-  // nearby probe positions intersect (README, `surface`).
-  double ms_volume = std::numeric_limits<double>::quiet_NaN();  // A^3
-  double ms_area = std::numeric_limits<double>::quiet_NaN();    // A^2
+  // the SA surface (alpha::ErodedUnion): ms_volume adds to sa_volume the
+  // probe layer under the cavity's wall (the points within one probe
+  // radius of the cavity's SA space, nearest to it), ms_area is the
+  // molecular surface lining the cavity; both split by cells as above.
+  double ms_volume = 0;  // A^3
+  double ms_area = 0;    // A^2
   // Largest distance of a cell centroid from the outside mouths of the
   // cavity's region (0 for voids), A.
   double depth = 0;

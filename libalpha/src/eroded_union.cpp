@@ -1,0 +1,670 @@
+#include "alpha/eroded_union.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string>
+
+#include "alpha/error.hpp"
+#include "compensated_sum.hpp"
+
+namespace alpha {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2 * kPi;
+// 8-node Gauss-Legendre rule on [-1, 1], nodes ascending.
+constexpr std::array<double, 8> kNode{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                      -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                      0.7966664774136267,  0.9602898564975363};
+constexpr std::array<double, 8> kWeight{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                                        0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                        0.2223810344533745, 0.1012285362903763};
+constexpr double kCutPrecision = 1e-8;  // of tau, relative to r
+constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between two nodes
+constexpr double kMaxPiece = kPi / 4;
+
+using Arc = ErodedUnion::Arc;
+
+double wrap(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+// Node k of the Gauss rule on [a, b], and its weight.
+double node(double a, double b, int k) { return (a + b) / 2 + (b - a) / 2 * kNode[k]; }
+double weight(double a, double b, int k) { return (b - a) / 2 * kWeight[k]; }
+
+bool full(const Arc& a) { return a.length >= kTwoPi; }
+
+// The parts of `set` inside `a`.
+std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
+  if (full(a)) return {set.begin(), set.end()};
+  std::vector<Arc> out;
+  for (const Arc& x : set) {
+    if (full(x)) {
+      out.push_back(a);
+      continue;
+    }
+    const double s = wrap(x.begin - a.begin);
+    for (const double start : {s, s - kTwoPi}) {
+      const double lo = std::max(start, 0.0), hi = std::min(start + x.length, a.length);
+      if (hi > lo) out.push_back({wrap(a.begin + lo), hi - lo});
+    }
+  }
+  return out;
+}
+
+// Whether the direction (x, y) in a circle's frame is on one of its arcs
+// (ends: the arcs' end directions), by the signs of cross products.
+bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double x, double y) {
+  for (std::size_t k = 0; k < set.size(); ++k) {
+    if (full(set[k])) return true;
+    const double after_begin = ends[k].cos_begin * y - ends[k].sin_begin * x;
+    const double before_end = x * ends[k].sin_end - y * ends[k].cos_end;
+    if (set[k].length <= kPi ? after_begin >= 0 && before_end >= 0 : after_begin >= 0 || before_end >= 0) return true;
+  }
+  return false;
+}
+
+// The circle where the spheres (p_i, w_i) and (p_j, w_j) meet, with a frame:
+// center o, unit axis w from p_i to p_j, unit e1, e2 spanning its plane;
+// z_i, z_j: the centers' coordinates along w from o.
+struct Circle {
+  Vec3 o, w, e1, e2;
+  double rho = 0, z_i = 0, z_j = 0;
+
+  Vec3 radial(double phi) const { return std::cos(phi) * e1 + std::sin(phi) * e2; }
+  double angle(const Vec3& v) const { return wrap(std::atan2(dot(v, e2), dot(v, e1))); }
+};
+
+Circle circle_of(const Vec3& pi, double wi, const Vec3& pj, double wj) {
+  Circle c;
+  const Vec3 d = pj - pi;
+  const double len = norm(d);
+  c.w = (1 / len) * d;
+  const double a = (len * len + wi - wj) / (2 * len);
+  c.o = pi + a * c.w;
+  c.rho = std::sqrt(std::max(0.0, (std::sqrt(wi) - a) * (std::sqrt(wi) + a)));
+  // e1: w crossed with the coordinate axis it is least aligned with.
+  const double ax = std::fabs(c.w.x), ay = std::fabs(c.w.y), az = std::fabs(c.w.z);
+  const Vec3 axis = ax <= ay && ax <= az ? Vec3{1, 0, 0} : ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  const Vec3 e = cross(c.w, axis);
+  c.e1 = (1 / norm(e)) * e;
+  c.e2 = cross(c.w, c.e1);
+  c.z_i = -a;
+  c.z_j = len - a;
+  return c;
+}
+
+// int_0^T |rho - t c| t dt, c = cos psi > 0.
+double ray_volume(double rho, double c, double T) {
+  const auto f = [&](double t) { return rho * t * t / 2 - c * t * t * t / 3; };
+  if (c * T <= rho) return f(T);
+  const double t0 = rho / c;  // the ray crosses the circle's axis
+  return 2 * f(t0) - f(T);
+}
+
+// int_a^b g(psi) dpsi over the wedge's angle, split where r cos psi = rho
+// (the torus crosses its axis) so that `smooth(lo, hi, crossing)` sees one
+// sign of rho - r cos psi.
+template <class Smooth>
+double over_wedge(double rho, double r, double a, double b, Smooth smooth) {
+  if (rho >= r) return smooth(a, b, false);
+  const double psi0 = std::atan2(std::sqrt((r - rho) * (r + rho)), rho);
+  double sum = 0;
+  const std::array<double, 4> cut{a, std::clamp(-psi0, a, b), std::clamp(psi0, a, b), b};
+  for (int k = 0; k < 3; ++k)
+    if (cut[k + 1] > cut[k]) sum += smooth(cut[k], cut[k + 1], k == 1);
+  return sum;
+}
+
+// int_a^b |rho - r cos psi| r dpsi.
+double wedge_area(double rho, double r, double a, double b) {
+  return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
+    const double x = r * (rho * (hi - lo) - r * (std::sin(hi) - std::sin(lo)));
+    return crossing ? -x : x;
+  });
+}
+
+// int_a^b ray_volume(rho, cos psi, r) dpsi.
+double wedge_volume(double rho, double r, double a, double b) {
+  return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
+    const double x = rho * r * r / 2 * (hi - lo) - r * r * r / 3 * (std::sin(hi) - std::sin(lo));
+    // Past the axis: rho^3 / (3 cos^2 psi) - x's integrand, by 2 f(t0) - f(r).
+    return crossing ? rho * rho * rho / 3 * (std::tan(hi) - std::tan(lo)) - x : x;
+  });
+}
+
+// Where a predicate that holds at a and not at b (or the reverse) changes.
+template <class Predicate>
+double change(double a, double b, Predicate holds) {
+  const bool at_a = holds(a);
+  for (int k = 0; k < kEdgeBisections; ++k) {
+    const double mid = (a + b) / 2;
+    (holds(mid) == at_a ? a : b) = mid;
+  }
+  return (a + b) / 2;
+}
+
+// [a, b] cut where a predicate changes, from its values at the 8 Gauss
+// nodes: each value extends to the next change, located by bisection
+// between the nodes that differ.
+struct Segment {
+  double lo, hi;
+  bool holds;
+};
+template <class Predicate>
+std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_node, Predicate holds) {
+  std::vector<Segment> out;
+  double start = a;
+  for (int k = 0; k < 8; ++k) {
+    if (k < 7 && at_node[k] == at_node[k + 1]) continue;
+    const double end = k == 7 ? b : change(node(a, b, k), node(a, b, k + 1), holds);
+    out.push_back({start, end, at_node[k]});
+    start = end;
+  }
+  return out;
+}
+
+}  // namespace
+
+// The integrals of the pieces of one ErodedUnion.
+class ErodedUnion::Integrator {
+public:
+  explicit Integrator(const ErodedUnion& eu)
+      : eu_(eu), t_(eu.balls_->complex().triangulation()), s_(eu.balls_->complex().simplices()), r_(eu.r_),
+        tol_(eu.tolerance_) {}
+
+  // The pieces of edge e's arcs inside `sector`, integrated.
+  LayerShare arcs(Index e, const Arc& sector) const {
+    LayerShare out;
+    const std::vector<Arc> pieces = clip(edge_arcs(e), sector);
+    if (pieces.empty()) return out;
+    const auto& v = s_.edge(e);
+    const Circle c = circle_of(t_.point(v[0]), t_.weight(v[0]), t_.point(v[1]), t_.weight(v[1]));
+    for (const Arc& piece : pieces) {
+      const int parts = int(std::ceil(piece.length / kMaxPiece));
+      for (int k = 0; k < parts; ++k) {
+        const double begin = piece.begin + piece.length * k / parts, end = piece.begin + piece.length * (k + 1) / parts;
+        // Within 2r of the piece: of its midpoint, a chord 2 rho sin(length / 4) from its ends.
+        const Hood hood = gather(c.o + c.rho * c.radial((begin + end) / 2),
+                                 2 * c.rho * std::sin((end - begin) / 4) + 2 * r_ + tol_);
+        const LayerShare x = arc_piece(hood, c, begin, end);
+        out.volume += x.volume;
+        out.area += x.area;
+      }
+    }
+    return out;
+  }
+
+  // The sector of cell c about its edge (local vertices x, y): between the
+  // half-planes through its two other vertices, the short way round.
+  Arc sector(Index c, int x, int y) const {
+    const auto& v = t_.cell(c).v;
+    const Index e = s_.find_edge(v[x], v[y]);
+    const auto& ev = s_.edge(e);
+    const Circle frame = circle_of(t_.point(ev[0]), t_.weight(ev[0]), t_.point(ev[1]), t_.weight(ev[1]));
+    std::array<double, 2> phi;
+    int n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != x && k != y) phi[n++] = frame.angle(t_.point(v[k]) - frame.o);
+    const double span = wrap(phi[1] - phi[0]);
+    return span <= kPi ? Arc{phi[0], span} : Arc{phi[1], kTwoPi - span};
+  }
+
+  // The whole circle of edge e, split where its ring's half-planes meet it
+  // (the same pieces as the sectors of its cells).
+  LayerShare all_arcs(Index e) const {
+    const auto& ev = s_.edge(e);
+    const Circle frame = circle_of(t_.point(ev[0]), t_.weight(ev[0]), t_.point(ev[1]), t_.weight(ev[1]));
+    std::vector<double> cuts;
+    for (Index f : s_.edge_triangles(e))
+      for (Index k : s_.triangle(f))
+        if (k != ev[0] && k != ev[1]) cuts.push_back(frame.angle(t_.point(k) - frame.o));
+    std::sort(cuts.begin(), cuts.end());
+    LayerShare out;
+    if (cuts.empty()) return arcs(e, {0, kTwoPi});
+    for (std::size_t k = 0; k < cuts.size(); ++k) {
+      const double next = k + 1 < cuts.size() ? cuts[k + 1] : cuts[0] + kTwoPi;
+      const LayerShare x = arcs(e, {cuts[k], next - cuts[k]});
+      out.volume += x.volume;
+      out.area += x.area;
+    }
+    return out;
+  }
+
+  // The reentrant piece of vertex v (index into vertices_).
+  LayerShare cone(std::size_t v) const {
+    const Vertex& vx = eu_.vertices_[v];
+    const auto tri = s_.triangle(vx.triangle);
+    std::array<Vec3, 3> dir;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 d = t_.point(tri[k]) - vx.p;
+      dir[k] = (1 / norm(d)) * d;
+    }
+    const double omega = solid_angle(vx.p, t_.point(tri[0]), t_.point(tri[1]), t_.point(tri[2]));
+    const Hood hood = gather(vx.p, 2 * r_ + tol_);
+    // u(s, sigma): the direction of P = (1 - s) a + s ((1 - sigma) b + sigma c),
+    // and the solid angle element |det(P, dP/ds, dP/dsigma)| / |P|^3.
+    const auto direction = [&](double s, double sigma, double* jacobian) {
+      const Vec3 edge = (1 - sigma) * dir[1] + sigma * dir[2];
+      const Vec3 p = (1 - s) * dir[0] + s * edge;
+      const double len = norm(p);
+      if (jacobian) *jacobian = s * std::fabs(dot(p, cross(edge - dir[0], dir[2] - dir[1]))) / (len * len * len);
+      return (1 / len) * p;
+    };
+    const auto clear_at_r = [&](double s, double sigma) {
+      return clear(hood, vx.p + r_ * direction(s, sigma, nullptr), r_, v);
+    };
+    std::array<std::array<bool, 8>, 8> at_r;
+    bool all_clear = true;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(node(0, 1, i), node(0, 1, j))) && all_clear;
+    if (all_clear) return {omega * r_ * r_ * r_ / 3, omega * r_ * r_};
+    // Per s, sigma in pieces where the eroded surface is there (tau = r)
+    // or cut off: tau^3 / 3 and r^2 over the solid angle.
+    LayerShare out;
+    for (int i = 0; i < 8; ++i) {
+      const double s = node(0, 1, i);
+      for (const Segment& g : segments(0, 1, at_r[i], [&](double sigma) { return clear_at_r(s, sigma); }))
+        for (int j = 0; j < 8; ++j) {
+          double jac;
+          const Vec3 u = direction(s, node(g.lo, g.hi, j), &jac);
+          const double w = weight(0, 1, i) * weight(g.lo, g.hi, j) * jac;
+          const double tau = g.holds ? r_ : cut(hood, vx.p, u, v);
+          out.volume += w * tau * tau * tau / 3;
+          if (g.holds) out.area += w * r_ * r_;
+        }
+    }
+    return out;
+  }
+
+private:
+  // What can be within 2r of a piece: balls whose sphere comes near, the
+  // circles of edges of K between them, boundary vertices.
+  struct Hood {
+    struct Ball {
+      Vec3 c;
+      double radius, radius_sq;
+      Index id;
+      mutable Index cover = kNone;  // see on_boundary
+    };
+    std::vector<Ball> balls;  // by id
+    std::vector<std::pair<Index, Circle>> circles;
+    std::vector<std::size_t> vertices;
+  };
+
+  const ErodedUnion& eu_;
+  const Triangulation& t_;
+  const Simplices& s_;
+  double r_, tol_;
+
+  std::span<const Arc> edge_arcs(Index e) const {
+    return {eu_.arcs_.data() + eu_.arc_start_[e], eu_.arcs_.data() + eu_.arc_start_[e + 1]};
+  }
+
+  Hood gather(const Vec3& center, double radius) const {
+    Hood h;
+    std::vector<Index> ids;
+    // Buried balls are left out: a point inside one is inside another.
+    eu_.ball_grid_.visit(center, radius + eu_.max_radius_, [&](Index k) {
+      if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + radius && eu_.balls_->ball_areas()[k] > 0)
+        ids.push_back(k);
+    });
+    std::sort(ids.begin(), ids.end());
+    for (Index k : ids) h.balls.push_back({t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNone});
+    for (Index k : ids)
+      for (Index e : s_.vertex_edges(k)) {
+        const auto& v = s_.edge(e);
+        if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
+        const Circle c = circle_of(t_.point(v[0]), t_.weight(v[0]), t_.point(v[1]), t_.weight(v[1]));
+        const Vec3 y = center - c.o;
+        const double z = dot(y, c.w), s = norm(y - z * c.w);
+        if ((s - c.rho) * (s - c.rho) + z * z < radius * radius) h.circles.emplace_back(e, c);
+      }
+    eu_.vertex_grid_.visit(center, radius, [&](Index v) {
+      if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
+    });
+    std::sort(h.vertices.begin(), h.vertices.end());
+    return h;
+  }
+
+  // Whether p, a point of sphere k, lies on the union's boundary: in k's
+  // power cell, i.e. in no ball of a neighbour of k.
+  // `cover`: a neighbour to try first, set to the one found covering p
+  // (the same neighbour covers the nearby points a piece tests in turn).
+  bool on_boundary(Index k, const Vec3& p, Index& cover) const {
+    const auto covers = [&](Index m) {
+      const Vec3 d = p - t_.point(m);
+      return dot(d, d) < t_.weight(m) - 2 * tol_ * std::sqrt(t_.weight(m));
+    };
+    if (cover != kNone && covers(cover)) return false;
+    for (Index e : s_.vertex_edges(k)) {
+      const auto& v = s_.edge(e);
+      const Index m = v[0] == k ? v[1] : v[0];
+      if (covers(m)) {
+        cover = m;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Whether direction d from vertex v lies in its normal cone (spanned by
+  // the directions to its triangle's three centers).
+  bool in_cone(std::size_t v, const Vec3& d) const {
+    const Vertex& vx = eu_.vertices_[v];
+    const auto tri = s_.triangle(vx.triangle);
+    const Vec3 a = t_.point(tri[0]) - vx.p, b = t_.point(tri[1]) - vx.p, c = t_.point(tri[2]) - vx.p;
+    const double whole = dot(a, cross(b, c));
+    return dot(d, cross(b, c)) * whole >= 0 && dot(a, cross(d, c)) * whole >= 0 && dot(a, cross(b, d)) * whole >= 0;
+  }
+
+  // A point of F found nearer to x than t: on a sphere (the nearest point
+  // of a hood ball), a circle (of a hood circle) or a vertex.
+  struct Nearer {
+    enum Kind { kNone, kBall, kCircle, kVertex } kind = kNone;
+    std::size_t which = 0;  // in the hood's list
+  };
+
+  // Whether no point of F (outside the union) is nearer to x than t, up to
+  // the tolerance; if one is, `nearer` tells which. `self`: the vertex
+  // whose piece x is tested for (or vertices_.size()), which keeps
+  // directions shared with a coincident vertex of smaller index out.
+  bool clear(const Hood& h, const Vec3& x, double t, std::size_t self, Nearer* nearer = nullptr) const {
+    const double limit = t - tol_;
+    if (limit <= 0) return true;
+    const double limit_sq = limit * limit;
+    const auto found = [&](Nearer::Kind kind, std::size_t which) {
+      if (nearer) *nearer = {kind, which};
+      return false;
+    };
+    bool in_union = false;
+    for (std::size_t k = 0; k < h.balls.size(); ++k) {
+      const Hood::Ball& b = h.balls[k];
+      const Vec3 d = x - b.c;
+      const double dd = dot(d, d);
+      if (dd >= b.radius_sq) continue;
+      in_union = true;
+      const double deep = b.radius - limit;  // x is nearer than limit to the sphere beyond this
+      if ((deep > 0 && dd <= deep * deep) || dd == 0) continue;
+      if (on_boundary(b.id, b.c + (b.radius / std::sqrt(dd)) * d, b.cover)) return found(Nearer::kBall, k);
+    }
+    if (!in_union) return found(Nearer::kNone, 0);
+    for (std::size_t k = 0; k < h.circles.size(); ++k) {
+      const auto& [e, c] = h.circles[k];
+      const Vec3 y = x - c.o;
+      const double z = dot(y, c.w);
+      if (std::fabs(z) >= limit) continue;
+      const Vec3 perp = y - z * c.w;
+      const double s = std::sqrt(dot(perp, perp));
+      if ((s - c.rho) * (s - c.rho) + z * z >= limit_sq) continue;
+      if (s <= tol_ || contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], dot(perp, c.e1), dot(perp, c.e2)))
+        return found(Nearer::kCircle, k);  // on the axis: all equally near
+    }
+    const bool is_vertex = self < eu_.vertices_.size();
+    for (std::size_t k = 0; k < h.vertices.size(); ++k) {
+      const std::size_t v = h.vertices[k];
+      const Vec3 d = x - eu_.vertices_[v].p;
+      if (dot(d, d) < limit_sq) return found(Nearer::kVertex, k);
+      if (is_vertex && v < self && norm(d) < t + tol_ && norm(eu_.vertices_[v].p - eu_.vertices_[self].p) <= tol_ &&
+          in_cone(v, d))
+        return found(Nearer::kNone, 0);
+    }
+    return true;
+  }
+
+  // Where the ray q + t u meets the bisector of q and the point of F found
+  // nearer (its distance to q + t u equals t, for a circle's point up to
+  // kCutPrecision), if
+  // in (0, hi): the ray's cut when that point stays the nearer one.
+  double crossing(const Hood& h, const Nearer& nearer, const Vec3& q, const Vec3& u, double hi) const {
+    double t = -1;
+    if (nearer.kind == Nearer::kBall) {  // |q + t u - c| = R - t
+      const Hood::Ball& b = h.balls[nearer.which];
+      const double den = 2 * (dot(u, b.c - q) - b.radius);
+      if (den > 0) t = (dot(q - b.c, q - b.c) - b.radius_sq) / den;
+    } else if (nearer.kind == Nearer::kVertex) {  // |q + t u - p| = t
+      const Vec3 p = eu_.vertices_[h.vertices[nearer.which]].p;
+      const double den = 2 * dot(u, p - q);
+      if (den > 0) t = dot(q - p, q - p) / den;
+    } else if (nearer.kind == Nearer::kCircle) {  // distance to the circle - t decreases along the ray
+      const Circle& c = h.circles[nearer.which].second;
+      double lo = 0;
+      t = hi;
+      while (t - lo > kCutPrecision * r_) {
+        const double mid = (lo + t) / 2;
+        const Vec3 y = q + mid * u - c.o;
+        const double z = dot(y, c.w), s = norm(y - z * c.w);
+        ((s - c.rho) * (s - c.rho) + z * z >= mid * mid ? lo : t) = mid;
+      }
+    }
+    return t < hi ? t : -1;
+  }
+
+  // The cut distance tau(q, u), at most r: where the nearer point found
+  // says, when the test confirms it (clear there, not just beyond), else by
+  // bisection on the test.
+  double cut(const Hood& h, const Vec3& q, const Vec3& u, std::size_t self) const {
+    Nearer nearer;
+    if (clear(h, q + r_ * u, r_, self, &nearer)) return r_;
+    double lo = 0, hi = r_;
+    // Below a thousand tolerances the test's answers are rounding noise.
+    for (int tries = 0; tries < 4; ++tries) {
+      const double t = crossing(h, nearer, q, u, hi);
+      if (t <= std::max(lo, 1e3 * tol_)) break;
+      if (!clear(h, q + t * u, t, self, &nearer)) {
+        hi = t;  // cut before: try the point found there
+        continue;
+      }
+      lo = t;
+      const double beyond = std::min(hi, t + kCutPrecision * r_);
+      if (!clear(h, q + beyond * u, beyond, self)) return t;
+      break;
+    }
+    while (hi - lo > kCutPrecision * r_) {
+      const double mid = (lo + hi) / 2;
+      (clear(h, q + mid * u, mid, self) ? lo : hi) = mid;
+    }
+    return lo;
+  }
+
+  // The toroidal piece of circle c for phi in [begin, end].
+  LayerShare arc_piece(const Hood& h, const Circle& c, double begin, double end) const {
+    const double psi_i = std::atan2(c.z_i, c.rho), psi_j = std::atan2(c.z_j, c.rho);
+    const std::size_t none = eu_.vertices_.size();
+    const auto direction = [&](const Vec3& radial, double psi) { return -std::cos(psi) * radial + std::sin(psi) * c.w; };
+    const auto clear_at_r = [&](const Vec3& radial, double psi) {
+      return clear(h, c.o + c.rho * radial + r_ * direction(radial, psi), r_, none);
+    };
+    std::array<std::array<bool, 8>, 8> at_r;
+    bool all_clear = true;
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 radial = c.radial(node(begin, end, i));
+      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(radial, node(psi_i, psi_j, j))) && all_clear;
+    }
+    if (all_clear)
+      return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
+    // Per phi, psi in pieces where the eroded surface is there (closed
+    // forms) or cut off (the rays' volumes up to tau).
+    LayerShare out;
+    for (int i = 0; i < 8; ++i) {
+      const double w = weight(begin, end, i);
+      const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
+      for (const Segment& g : segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(radial, psi); })) {
+        if (g.holds) {
+          out.volume += w * wedge_volume(c.rho, r_, g.lo, g.hi);
+          out.area += w * wedge_area(c.rho, r_, g.lo, g.hi);
+          continue;
+        }
+        for (int j = 0; j < 8; ++j) {
+          const double psi = node(g.lo, g.hi, j);
+          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, std::cos(psi), cut(h, q, direction(radial, psi), none));
+        }
+      }
+    }
+    return out;
+  }
+};
+
+ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), r_(r) {
+  const AlphaComplex& ac = balls.complex();
+  const Triangulation& t = ac.triangulation();
+  const Simplices& s = ac.simplices();
+  if (!(r >= 0) || !std::isfinite(r)) fail("eroded union: the erosion radius must be a number >= 0");
+  const std::size_t n = t.num_points();
+  shell_factor_.assign(n, 0.0);
+  contact_factor_.assign(n, 0.0);
+  for (Index i = 0; i < n; ++i) {
+    if (!balls.in_dual_complex_vertex(i) || balls.ball_areas()[i] == 0) continue;
+    const double radius = std::sqrt(t.weight(i));
+    if (radius < r)
+      fail("eroded union: ball " + std::to_string(i) + " of radius " + std::to_string(radius) +
+           " on the boundary is smaller than the erosion radius " + std::to_string(r));
+    const double inner = radius - r;
+    shell_factor_[i] = (radius - inner) * (radius * radius + radius * inner + inner * inner) / (3 * radius * radius);
+    contact_factor_[i] = inner * inner / (radius * radius);
+    max_radius_ = std::max(max_radius_, radius);
+  }
+  tolerance_ = 1e-9 * std::max(max_radius_, r);
+  const double power_tolerance = 2 * tolerance_ * max_radius_;
+
+  // Arcs: each circle of an edge of K, less the balls of its ring.
+  arc_start_.assign(s.num_edges() + 1, 0);
+  for (Index e = 0; e < s.num_edges(); ++e) {
+    arc_start_[e] = arcs_.size();
+    if (r == 0 || !balls.in_dual_complex_edge(e)) continue;
+    const auto& v = s.edge(e);
+    const Circle c = circle_of(t.point(v[0]), t.weight(v[0]), t.point(v[1]), t.weight(v[1]));
+    if (c.rho <= tolerance_) continue;  // touching balls: no arc worth a piece
+    std::vector<Arc> set{{0, kTwoPi}};
+    for (Index f : s.edge_triangles(e)) {
+      for (Index k : s.triangle(f)) {
+        if (k == v[0] || k == v[1]) continue;
+        // On the circle, |x - p_k|^2 >= R_k^2 reads A cos phi + B sin phi <= C.
+        const Vec3 g = c.o - t.point(k);
+        const double a = -2 * c.rho * dot(g, c.e1), b = -2 * c.rho * dot(g, c.e2);
+        const double m = std::hypot(a, b), cc = dot(g, g) + c.rho * c.rho - t.weight(k);
+        if (cc >= m) continue;  // the circle is outside B_k
+        if (cc <= -m) {         // inside B_k
+          set.clear();
+          break;
+        }
+        // cos(phi - phi0) <= cc / m: phi at least delta from phi0.
+        const double delta = std::atan2(std::sqrt((m - cc) * (m + cc)), cc);
+        set = clip(set, {wrap(std::atan2(b, a) + delta), kTwoPi - 2 * delta});
+      }
+      if (set.empty()) break;
+    }
+    arcs_.insert(arcs_.end(), set.begin(), set.end());
+  }
+  arc_start_[s.num_edges()] = arcs_.size();
+  for (const Arc& a : arcs_)
+    arc_ends_.push_back({std::cos(a.begin), std::sin(a.begin), std::cos(a.begin + a.length), std::sin(a.begin + a.length)});
+
+  // Vertices: the two points where the spheres of a triangle of K meet,
+  // kept when no apex of its two cells covers them (on its Voronoi edge).
+  vertex_start_.assign(s.num_triangles() + 1, 0);
+  for (Index f = 0; f < s.num_triangles(); ++f) {
+    vertex_start_[f] = vertices_.size();
+    if (r == 0 || !balls.in_dual_complex_triangle(f)) continue;
+    const auto v = s.triangle(f);
+    const Vec3 p0 = t.point(v[0]), a = t.point(v[1]) - p0, b = t.point(v[2]) - p0, normal = cross(a, b);
+    const double nn = dot(normal, normal), w0 = t.weight(v[0]);
+    if (nn == 0) continue;
+    // The point of the plane with equal power to the three balls.
+    const double alpha_a = (dot(a, a) + w0 - t.weight(v[1])) / 2, alpha_b = (dot(b, b) + w0 - t.weight(v[2])) / 2;
+    const Vec3 x = (1 / nn) * (alpha_a * cross(b, normal) + alpha_b * cross(normal, a));
+    // Three spheres meeting (almost) in their centers' plane: a flat cone,
+    // and the two points within rounding of each other.
+    const double h_sq = w0 - dot(x, x);
+    if (h_sq <= 1e6 * tolerance_ * tolerance_) continue;
+    const Vec3 z0 = p0 + x;
+    const double h = std::sqrt(h_sq / nn);
+    const auto cells = s.triangle_cells(f);
+    for (const double side : {1.0, -1.0}) {
+      const Vec3 z = z0 + (side * h) * normal;
+      bool covered = false;
+      Index cell = kNone;
+      double best = -1;
+      for (Index cc : cells) {
+        double height = 0;  // of the apex above the plane, on z's side; 0 for the infinite vertex
+        if (!t.is_infinite(cc)) {
+          const Index apex = t.cell(cc).v[0] + t.cell(cc).v[1] + t.cell(cc).v[2] + t.cell(cc).v[3] - v[0] - v[1] - v[2];
+          const Vec3 d = z - t.point(apex);
+          covered = covered || dot(d, d) < t.weight(apex) - power_tolerance;
+          height = side * dot(t.point(apex) - z0, normal);
+        }
+        if (cell == kNone || height > best) cell = cc, best = height;
+      }
+      if (!covered) vertices_.push_back({z, f, cell});
+    }
+  }
+  vertex_start_[s.num_triangles()] = vertices_.size();
+
+  ball_grid_ = PointGrid(2 * max_radius_ + 2 * r + tolerance_);
+  for (Index i = 0; i < n; ++i)
+    if (balls.in_dual_complex_vertex(i)) ball_grid_.add(t.point(i), i);
+  ball_grid_.finish();
+  vertex_grid_ = PointGrid(2 * r + tolerance_);
+  for (std::size_t v = 0; v < vertices_.size(); ++v) vertex_grid_.add(vertices_[v].p, Index(v));
+  vertex_grid_.finish();
+}
+
+LayerShare ErodedUnion::layer() const {
+  const AlphaComplex& ac = balls_->complex();
+  const Simplices& s = ac.simplices();
+  const Integrator in(*this);
+  Sum volume, area;
+  for (std::size_t i = 0; i < shell_factor_.size(); ++i) {
+    volume.add(shell_factor_[i] * balls_->ball_areas()[i]);
+    area.add(contact_factor_[i] * balls_->ball_areas()[i]);
+  }
+  for (Index e = 0; e < s.num_edges(); ++e) {
+    if (arc_start_[e] == arc_start_[e + 1]) continue;
+    const LayerShare x = in.all_arcs(e);
+    volume.add(x.volume);
+    area.add(x.area);
+  }
+  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+    const LayerShare x = in.cone(v);
+    volume.add(x.volume);
+    area.add(x.area);
+  }
+  return {volume.value(), area.value()};
+}
+
+LayerShare ErodedUnion::cell_share(Index c) const {
+  const AlphaComplex& ac = balls_->complex();
+  const Triangulation& t = ac.triangulation();
+  const Simplices& s = ac.simplices();
+  if (t.is_infinite(c)) return {};
+  const Integrator in(*this);
+  Sum volume, area;
+  volume.add(balls_->cell_area(c, shell_factor_));
+  area.add(balls_->cell_area(c, contact_factor_));
+  const auto& v = t.cell(c).v;
+  for (int x = 0; x < 4; ++x)
+    for (int y = x + 1; y < 4; ++y) {
+      const Index e = s.find_edge(v[x], v[y]);
+      if (arc_start_[e] == arc_start_[e + 1]) continue;
+      const LayerShare piece = in.arcs(e, in.sector(c, x, y));
+      volume.add(piece.volume);
+      area.add(piece.area);
+    }
+  for (int k = 0; k < 4; ++k) {
+    const Index f = s.cell_triangle(c, k);
+    for (std::size_t p = vertex_start_[f]; p < vertex_start_[f + 1]; ++p) {
+      if (vertices_[p].cell != c) continue;
+      const LayerShare piece = in.cone(p);
+      volume.add(piece.volume);
+      area.add(piece.area);
+    }
+  }
+  return {volume.value(), area.value()};
+}
+
+}  // namespace alpha

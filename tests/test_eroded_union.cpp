@@ -1,0 +1,242 @@
+// ErodedUnion (the solvent-excluded body of a union of balls) against
+// closed forms and a Monte Carlo estimate from an independent nearest-point
+// test written here from the definition; its area against the derivative
+// of its volume in r; its per-cell shares against its totals.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "alpha/error.hpp"
+#include "alpha/eroded_union.hpp"
+#include "point_sets.hpp"
+
+using namespace alpha;
+using testing::random_points;
+using testing::random_weights;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Balls {
+  std::vector<Vec3> centers;
+  std::vector<double> radii;  // of the union (already inflated)
+};
+
+// The union with everything it refers to, inside a hull of four far points
+// of radius 0 (they add nothing and keep every ball inside the hull).
+struct Union {
+  std::unique_ptr<Triangulation> t;
+  std::unique_ptr<AlphaComplex> ac;
+  std::unique_ptr<UnionOfBalls> u;
+  explicit Union(const Balls& b) {
+    std::vector<Vec3> p = b.centers;
+    std::vector<double> w;
+    for (double r : b.radii) w.push_back(r * r);
+    for (const Vec3& q : {Vec3{100, 0, 0}, Vec3{0, 100, 0}, Vec3{0, 0, 100}, Vec3{-100, -100, -100}})
+      p.push_back(q), w.push_back(0);
+    t = std::make_unique<Triangulation>(p, w);
+    ac = std::make_unique<AlphaComplex>(*t);
+    u = std::make_unique<UnionOfBalls>(*ac);
+  }
+};
+
+// ---- the oracle: distance from a point of the union to its outside ----------
+// The nearest point of the outside lies on the union's boundary: the
+// nearest point of some sphere, of some circle where two spheres meet, or a
+// point where three meet, whichever of those lies on no other ball's
+// inside (on a sphere, the distance from x only grows away from the nearest
+// point, so a patch's nearest point is that point or on the patch's rim).
+struct Oracle {
+  Balls b;
+  std::vector<Vec3> triple_points;
+
+  explicit Oracle(const Balls& balls) : b(balls) {
+    const std::size_t n = b.centers.size();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (std::size_t k = j + 1; k < n; ++k)
+          for (const Vec3& p : meet(i, j, k))
+            if (on_boundary(p)) triple_points.push_back(p);
+  }
+
+  bool on_boundary(const Vec3& p) const {
+    for (std::size_t k = 0; k < b.centers.size(); ++k)
+      if (norm(p - b.centers[k]) < b.radii[k] * (1 - 1e-12)) return false;
+    return true;
+  }
+
+  std::vector<Vec3> meet(std::size_t i, std::size_t j, std::size_t k) const {
+    const Vec3 p0 = b.centers[i], a = b.centers[j] - p0, c = b.centers[k] - p0, n = cross(a, c);
+    const double nn = dot(n, n), w0 = b.radii[i] * b.radii[i];
+    if (nn == 0) return {};
+    const double alpha_a = (dot(a, a) + w0 - b.radii[j] * b.radii[j]) / 2;
+    const double alpha_c = (dot(c, c) + w0 - b.radii[k] * b.radii[k]) / 2;
+    const Vec3 x = (1 / nn) * (alpha_a * cross(c, n) + alpha_c * cross(n, a));
+    const double h2 = w0 - dot(x, x);
+    if (h2 < 0) return {};
+    const double h = std::sqrt(h2 / nn);
+    return {p0 + x + h * n, p0 + x - h * n};
+  }
+
+  // Distance from x to the outside (0 outside the union).
+  double depth(const Vec3& x) const {
+    const std::size_t n = b.centers.size();
+    bool inside = false;
+    for (std::size_t i = 0; i < n; ++i) inside = inside || norm(x - b.centers[i]) < b.radii[i];
+    if (!inside) return 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 d = x - b.centers[i];
+      const double len = norm(d);
+      if (len == 0 || b.radii[i] == 0) continue;
+      const Vec3 p = b.centers[i] + (b.radii[i] / len) * d;
+      if (on_boundary(p)) best = std::min(best, norm(x - p));
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Vec3 axis = b.centers[j] - b.centers[i];
+        const double len = norm(axis), ri = b.radii[i], rj = b.radii[j];
+        if (len >= ri + rj || len <= std::fabs(ri - rj)) continue;
+        const Vec3 w = (1 / len) * axis;
+        const double a = (len * len + ri * ri - rj * rj) / (2 * len), rho = std::sqrt(ri * ri - a * a);
+        const Vec3 o = b.centers[i] + a * w, y = x - o, perp = y - dot(y, w) * w;
+        if (norm(perp) == 0) continue;
+        const Vec3 p = o + (rho / norm(perp)) * perp;
+        if (on_boundary(p)) best = std::min(best, norm(x - p));
+      }
+    for (const Vec3& p : triple_points) best = std::min(best, norm(x - p));
+    return best;
+  }
+
+  // Monte Carlo volume of the points at depth >= r, and its standard error.
+  std::pair<double, double> eroded_volume(double r, int samples, std::uint64_t seed) const {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (std::size_t i = 0; i < b.centers.size(); ++i) {
+      const Vec3 c = b.centers[i];
+      const double R = b.radii[i];
+      lo = {std::min(lo.x, c.x - R), std::min(lo.y, c.y - R), std::min(lo.z, c.z - R)};
+      hi = {std::max(hi.x, c.x + R), std::max(hi.y, c.y + R), std::max(hi.z, c.z + R)};
+    }
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    int hits = 0;
+    for (int k = 0; k < samples; ++k) {
+      const Vec3 x{lo.x + u(rng) * (hi.x - lo.x), lo.y + u(rng) * (hi.y - lo.y), lo.z + u(rng) * (hi.z - lo.z)};
+      hits += depth(x) >= r;
+    }
+    const double box = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z), f = double(hits) / samples;
+    return {box * f, box * std::sqrt(f * (1 - f) / samples)};
+  }
+};
+
+struct Measured {
+  double volume, area;
+};
+
+Measured eroded(const Union& u, double r) {
+  const ErodedUnion e(*u.u, r);
+  const LayerShare layer = e.layer();
+  return {u.u->volume() - layer.volume, layer.area};
+}
+
+// A tight random cluster: probe positions closer than 2r everywhere.
+Balls cluster(std::size_t n, std::uint64_t seed, double spread, double lo, double hi) {
+  Balls b;
+  b.centers = random_points(n, seed, spread);
+  for (double w : random_weights(n, seed + 1, lo * lo, hi * hi)) b.radii.push_back(std::sqrt(w));
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("eroded union: one ball shrinks by r", "[eroded]") {
+  const Union u(Balls{{{1, 2, 3}}, {3.2}});
+  for (const double r : {0.0, 1.4, 3.2}) {
+    const Measured m = eroded(u, r);
+    const double inner = 3.2 - r;
+    CHECK(m.volume == Approx(4 * kPi / 3 * inner * inner * inner).margin(1e-12));
+    CHECK(m.area == Approx(4 * kPi * inner * inner).margin(1e-12));
+  }
+}
+
+TEST_CASE("eroded union: Monte Carlo on random sets, smooth and singular", "[eroded]") {
+  struct Case {
+    Balls balls;
+    double r;
+  };
+  std::vector<Case> cases;
+  cases.push_back({{{{0, 0, 0}, {3, 0, 0}}, {2.5, 2.5}}, 1.0});    // torus, rho 1.66 > r
+  cases.push_back({{{{0, 0, 0}, {4.4, 0, 0}}, {2.5, 2.5}}, 1.4});  // spindle torus, rho 1.19 < r
+  cases.push_back({cluster(5, 11, 2.5, 2.4, 3.4), 1.4});
+  cases.push_back({cluster(8, 12, 3.5, 2.4, 3.4), 1.4});
+  cases.push_back({cluster(10, 13, 5.0, 2.4, 3.4), 2.0});
+  for (const auto& [balls, r] : cases) {
+    const Union u(balls);
+    const Measured m = eroded(u, r);
+    const auto [mc, sigma] = Oracle(balls).eroded_volume(r, 200000, 7);
+    INFO("balls " << balls.centers.size() << " r " << r << " volume " << m.volume << " MC " << mc << " +- " << sigma);
+    CHECK(std::fabs(m.volume - mc) <= 4.5 * sigma);
+    // The area is minus the derivative of the volume in r (co-area formula;
+    // the union stays fixed).
+    const double h = 1e-4;
+    const double derivative = (eroded(u, r + h).volume - eroded(u, r - h).volume) / (2 * h);
+    INFO("area " << m.area << " -dV/dr " << -derivative);
+    CHECK(m.area == Approx(-derivative).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("eroded union: degenerate input, against Monte Carlo", "[eroded]") {
+  // A cube's 8 corners, spheres through its center (8 meet in one point:
+  // several triangles give that vertex), and through the face centers.
+  Balls cube;
+  for (const Vec3& p : testing::grid_points(2, 2.0)) cube.centers.push_back(p);
+  for (const double radius : {std::sqrt(3.0), std::sqrt(2.0), 1.9}) {
+    cube.radii.assign(8, radius);
+    const Union u(cube);
+    const Measured m = eroded(u, 1.0);
+    const auto [mc, sigma] = Oracle(cube).eroded_volume(1.0, 200000, 3);
+    INFO("radius " << radius << " volume " << m.volume << " MC " << mc << " +- " << sigma);
+    CHECK(std::fabs(m.volume - mc) <= 4.5 * sigma);
+    const double h = 1e-4;
+    CHECK(m.area == Approx(-(eroded(u, 1 + h).volume - eroded(u, 1 - h).volume) / (2 * h)).epsilon(1e-5));
+  }
+  // Coplanar centers, duplicated.
+  Balls flat{{{0, 0, 0}, {2.5, 0, 0}, {0, 2.5, 0}, {2.5, 2.5, 0}, {1.25, 1.25, 0}, {1.25, 1.25, 0}},
+             {2, 2, 2, 2, 1.5, 1.5}};
+  const Union u(flat);
+  const auto [mc, sigma] = Oracle(flat).eroded_volume(1.2, 200000, 5);
+  CHECK(std::fabs(eroded(u, 1.2).volume - mc) <= 4.5 * sigma);
+}
+
+TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
+  for (const auto& [balls, r] : {std::pair{cluster(40, 21, 9.0, 1.6, 3.4), 1.4}, std::pair{cluster(12, 22, 3.0, 2.4, 3.4), 1.4}}) {
+    const Union u(balls);
+    const ErodedUnion e(*u.u, r);
+    const LayerShare whole = e.layer();
+    double volume = 0, area = 0;
+    for (Index c = 0; c < u.t->num_cells(); ++c) {
+      const LayerShare share = e.cell_share(c);
+      volume += share.volume;
+      area += share.area;
+    }
+    CHECK(volume == Approx(whole.volume).epsilon(1e-12));
+    CHECK(area == Approx(whole.area).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("eroded union: r = 0 is the union, bad r refused", "[eroded]") {
+  const Balls balls = cluster(10, 31, 4.0, 1.5, 3.0);
+  const Union u(balls);
+  const Measured m = eroded(u, 0);
+  CHECK(m.volume == Approx(u.u->volume()).epsilon(1e-14));
+  CHECK(m.area == Approx(u.u->area()).epsilon(1e-12));
+  CHECK_THROWS_AS(ErodedUnion(*u.u, -1), Error);
+  CHECK_THROWS_AS(ErodedUnion(*u.u, std::nan("")), Error);
+  CHECK_THROWS_AS(ErodedUnion(*u.u, 3.5), Error);  // larger than every ball
+}
