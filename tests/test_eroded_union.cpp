@@ -1,18 +1,18 @@
 // ErodedUnion (the solvent-excluded body of a union of balls) against
 // closed forms and a Monte Carlo estimate from an independent nearest-point
-// test written here from the definition; its area against the derivative
-// of its volume in r; its per-cell shares against its totals.
+// test (depth_oracle.hpp); its area against the derivative of its volume
+// in r; its per-cell shares against its totals.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <random>
 #include <vector>
 
 #include "alpha/error.hpp"
 #include "alpha/eroded_union.hpp"
+#include "depth_oracle.hpp"
 #include "point_sets.hpp"
 
 using namespace alpha;
@@ -43,95 +43,6 @@ struct Union {
     t = std::make_unique<Triangulation>(p, w);
     ac = std::make_unique<AlphaComplex>(*t);
     u = std::make_unique<UnionOfBalls>(*ac);
-  }
-};
-
-// ---- the oracle: distance from a point of the union to its outside ----------
-// The nearest point of the outside lies on the union's boundary: the
-// nearest point of some sphere, of some circle where two spheres meet, or a
-// point where three meet, whichever of those lies on no other ball's
-// inside (on a sphere, the distance from x only grows away from the nearest
-// point, so a patch's nearest point is that point or on the patch's rim).
-struct Oracle {
-  Balls b;
-  std::vector<Vec3> triple_points;
-
-  explicit Oracle(const Balls& balls) : b(balls) {
-    const std::size_t n = b.centers.size();
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j)
-        for (std::size_t k = j + 1; k < n; ++k)
-          for (const Vec3& p : meet(i, j, k))
-            if (on_boundary(p)) triple_points.push_back(p);
-  }
-
-  bool on_boundary(const Vec3& p) const {
-    for (std::size_t k = 0; k < b.centers.size(); ++k)
-      if (norm(p - b.centers[k]) < b.radii[k] * (1 - 1e-12)) return false;
-    return true;
-  }
-
-  std::vector<Vec3> meet(std::size_t i, std::size_t j, std::size_t k) const {
-    const Vec3 p0 = b.centers[i], a = b.centers[j] - p0, c = b.centers[k] - p0, n = cross(a, c);
-    const double nn = dot(n, n), w0 = b.radii[i] * b.radii[i];
-    if (nn == 0) return {};
-    const double alpha_a = (dot(a, a) + w0 - b.radii[j] * b.radii[j]) / 2;
-    const double alpha_c = (dot(c, c) + w0 - b.radii[k] * b.radii[k]) / 2;
-    const Vec3 x = (1 / nn) * (alpha_a * cross(c, n) + alpha_c * cross(n, a));
-    const double h2 = w0 - dot(x, x);
-    if (h2 < 0) return {};
-    const double h = std::sqrt(h2 / nn);
-    return {p0 + x + h * n, p0 + x - h * n};
-  }
-
-  // Distance from x to the outside (0 outside the union).
-  double depth(const Vec3& x) const {
-    const std::size_t n = b.centers.size();
-    bool inside = false;
-    for (std::size_t i = 0; i < n; ++i) inside = inside || norm(x - b.centers[i]) < b.radii[i];
-    if (!inside) return 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 d = x - b.centers[i];
-      const double len = norm(d);
-      if (len == 0 || b.radii[i] == 0) continue;
-      const Vec3 p = b.centers[i] + (b.radii[i] / len) * d;
-      if (on_boundary(p)) best = std::min(best, norm(x - p));
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const Vec3 axis = b.centers[j] - b.centers[i];
-        const double len = norm(axis), ri = b.radii[i], rj = b.radii[j];
-        if (len >= ri + rj || len <= std::fabs(ri - rj)) continue;
-        const Vec3 w = (1 / len) * axis;
-        const double a = (len * len + ri * ri - rj * rj) / (2 * len), rho = std::sqrt(ri * ri - a * a);
-        const Vec3 o = b.centers[i] + a * w, y = x - o, perp = y - dot(y, w) * w;
-        if (norm(perp) == 0) continue;
-        const Vec3 p = o + (rho / norm(perp)) * perp;
-        if (on_boundary(p)) best = std::min(best, norm(x - p));
-      }
-    for (const Vec3& p : triple_points) best = std::min(best, norm(x - p));
-    return best;
-  }
-
-  // Monte Carlo volume of the points at depth >= r, and its standard error.
-  std::pair<double, double> eroded_volume(double r, int samples, std::uint64_t seed) const {
-    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (std::size_t i = 0; i < b.centers.size(); ++i) {
-      const Vec3 c = b.centers[i];
-      const double R = b.radii[i];
-      lo = {std::min(lo.x, c.x - R), std::min(lo.y, c.y - R), std::min(lo.z, c.z - R)};
-      hi = {std::max(hi.x, c.x + R), std::max(hi.y, c.y + R), std::max(hi.z, c.z + R)};
-    }
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    int hits = 0;
-    for (int k = 0; k < samples; ++k) {
-      const Vec3 x{lo.x + u(rng) * (hi.x - lo.x), lo.y + u(rng) * (hi.y - lo.y), lo.z + u(rng) * (hi.z - lo.z)};
-      hits += depth(x) >= r;
-    }
-    const double box = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z), f = double(hits) / samples;
-    return {box * f, box * std::sqrt(f * (1 - f) / samples)};
   }
 };
 
@@ -179,7 +90,7 @@ TEST_CASE("eroded union: Monte Carlo on random sets, smooth and singular", "[ero
   for (const auto& [balls, r] : cases) {
     const Union u(balls);
     const Measured m = eroded(u, r);
-    const auto [mc, sigma] = Oracle(balls).eroded_volume(r, 200000, 7);
+    const auto [mc, sigma] = testing::DepthOracle(balls.centers, balls.radii, r).volume_deeper(r, 200000, 7);
     INFO("balls " << balls.centers.size() << " r " << r << " volume " << m.volume << " MC " << mc << " +- " << sigma);
     CHECK(std::fabs(m.volume - mc) <= 4.5 * sigma);
     // The area is minus the derivative of the volume in r (co-area formula;
@@ -200,7 +111,7 @@ TEST_CASE("eroded union: degenerate input, against Monte Carlo", "[eroded]") {
     cube.radii.assign(8, radius);
     const Union u(cube);
     const Measured m = eroded(u, 1.0);
-    const auto [mc, sigma] = Oracle(cube).eroded_volume(1.0, 200000, 3);
+    const auto [mc, sigma] = testing::DepthOracle(cube.centers, cube.radii, 1.0).volume_deeper(1.0, 200000, 3);
     INFO("radius " << radius << " volume " << m.volume << " MC " << mc << " +- " << sigma);
     CHECK(std::fabs(m.volume - mc) <= 4.5 * sigma);
     const double h = 1e-4;
@@ -210,7 +121,7 @@ TEST_CASE("eroded union: degenerate input, against Monte Carlo", "[eroded]") {
   Balls flat{{{0, 0, 0}, {2.5, 0, 0}, {0, 2.5, 0}, {2.5, 2.5, 0}, {1.25, 1.25, 0}, {1.25, 1.25, 0}},
              {2, 2, 2, 2, 1.5, 1.5}};
   const Union u(flat);
-  const auto [mc, sigma] = Oracle(flat).eroded_volume(1.2, 200000, 5);
+  const auto [mc, sigma] = testing::DepthOracle(flat.centers, flat.radii, 1.2).volume_deeper(1.2, 200000, 5);
   CHECK(std::fabs(eroded(u, 1.2).volume - mc) <= 4.5 * sigma);
 }
 

@@ -1,13 +1,17 @@
 // The molecular (solvent-excluded) surface of real proteins
-// (alpha::ErodedUnion on the atoms of molecule::read_structure): its area
-// is minus the derivative of its volume in the probe radius with the SAS
-// fixed (two different integrals over the probe layer), and it lies between
-// the van der Waals and the solvent-accessible unions.
+// (alpha::ErodedUnion on the atoms of molecule::read_structure): its volume
+// against a Monte Carlo estimate from an independent nearest-point test
+// (depth_oracle.hpp), its area against minus the derivative of its volume
+// in the probe radius with the SAS fixed (two different integrals over the
+// probe layer), and both between the van der Waals and SA unions.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "alpha/eroded_union.hpp"
+#include "depth_oracle.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/structure.hpp"
 
@@ -39,4 +43,16 @@ TEST_CASE("molecular surface: area = -dV/dr, and between the vdW and SA unions, 
     CHECK(area < vdw.balls.area());  // the probe bridges the crevices between atoms
     CHECK(eroded(1.4) == std::pair{volume, area});  // deterministic
   }
+}
+
+TEST_CASE("molecular surface: the volume of 1fkgA against Monte Carlo", "[surface]") {
+  const auto atoms = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/1fkgA.pdb").atoms;
+  const molecule::AtomBalls b = molecule::atom_balls(atoms, 1.4);
+  std::vector<double> radii;
+  for (double w : b.weights) radii.push_back(std::sqrt(w));
+  const Union sas(b);
+  const double volume = sas.balls.volume() - alpha::ErodedUnion(sas.balls, 1.4).layer().volume;
+  const auto [mc, sigma] = testing::DepthOracle(b.points, radii, 1.4).volume_deeper(1.4, 400000, 11);
+  INFO("volume " << volume << " Monte Carlo " << mc << " +- " << sigma);
+  CHECK(std::fabs(volume - mc) <= 4.5 * sigma);  // sigma: 0.3 % of the volume
 }
