@@ -169,6 +169,34 @@ std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_
   return out;
 }
 
+// A spherical triangle of directions (corners a, b, c) in geodesic polar
+// coordinates about a: u(s, sigma) lies on the great circle from a to the
+// point m(sigma) of the arc from b to c (both spherical interpolations),
+// at s of the angle theta(sigma) between them. The solid angle element is
+// sin(s theta) theta beta'(sigma), beta the azimuth of m about a,
+// beta' = a.(m x m') / sin^2 theta: smooth however wide the triangle.
+struct SphericalTriangle {
+  std::array<Vec3, 3> dir;
+  double gamma;  // the angle from b to c
+  explicit SphericalTriangle(const std::array<Vec3, 3>& d)
+      : dir(d), gamma(std::atan2(norm(cross(d[1], d[2])), dot(d[1], d[2]))) {}
+  Vec3 direction(double s, double sigma, double* jacobian) const {
+    const double sg = std::sin(gamma);
+    const Vec3 m = sg > 0 ? (1 / sg) * (std::sin((1 - sigma) * gamma) * dir[1] + std::sin(sigma * gamma) * dir[2])
+                          : dir[1];
+    const double theta = std::atan2(norm(cross(dir[0], m)), dot(dir[0], m)), st = std::sin(theta);
+    if (st <= 0 || sg <= 0) {  // a flat triangle
+      if (jacobian) *jacobian = 0;
+      return st <= 0 ? dir[0] : (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m);
+    }
+    if (jacobian) {
+      const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
+      *jacobian = std::sin(s * theta) * theta * std::fabs(dot(dir[0], cross(m, dm))) / (st * st);
+    }
+    return (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m);
+  }
+};
+
 }  // namespace
 
 // The integrals of the pieces of one ErodedUnion.
@@ -245,25 +273,19 @@ public:
       const Vec3 d = t_.point(tri[k]) - vx.p;
       dir[k] = (1 / norm(d)) * d;
     }
-    const double omega = solid_angle(vx.p, t_.point(tri[0]), t_.point(tri[1]), t_.point(tri[2]));
+    const SphericalTriangle cone(dir);
     const Hood hood = gather(vx.p, 2 * r_ + tol_);
-    // u(s, sigma): the direction of P = (1 - s) a + s ((1 - sigma) b + sigma c),
-    // and the solid angle element |det(P, dP/ds, dP/dsigma)| / |P|^3.
-    const auto direction = [&](double s, double sigma, double* jacobian) {
-      const Vec3 edge = (1 - sigma) * dir[1] + sigma * dir[2];
-      const Vec3 p = (1 - s) * dir[0] + s * edge;
-      const double len = norm(p);
-      if (jacobian) *jacobian = s * std::fabs(dot(p, cross(edge - dir[0], dir[2] - dir[1]))) / (len * len * len);
-      return (1 / len) * p;
-    };
     const auto clear_at_r = [&](double s, double sigma) {
-      return clear(hood, vx.p + r_ * direction(s, sigma, nullptr), r_, v);
+      return clear(hood, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
     };
     std::array<std::array<bool, 8>, 8> at_r;
     bool all_clear = true;
     for (int i = 0; i < 8; ++i)
       for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(node(0, 1, i), node(0, 1, j))) && all_clear;
-    if (all_clear) return {omega * r_ * r_ * r_ / 3, omega * r_ * r_};
+    if (all_clear) {
+      const double omega = solid_angle({}, dir[0], dir[1], dir[2]);
+      return {omega * r_ * r_ * r_ / 3, omega * r_ * r_};
+    }
     // Per s, sigma in pieces where the eroded surface is there (tau = r)
     // or cut off: tau^3 / 3 and r^2 over the solid angle.
     LayerShare out;
@@ -272,7 +294,7 @@ public:
       for (const Segment& g : segments(0, 1, at_r[i], [&](double sigma) { return clear_at_r(s, sigma); }))
         for (int j = 0; j < 8; ++j) {
           double jac;
-          const Vec3 u = direction(s, node(g.lo, g.hi, j), &jac);
+          const Vec3 u = cone.direction(s, node(g.lo, g.hi, j), &jac);
           const double w = weight(0, 1, i) * weight(g.lo, g.hi, j) * jac;
           const double tau = g.holds ? r_ : cut(hood, vx.p, u, v);
           out.volume += w * tau * tau * tau / 3;
