@@ -67,7 +67,7 @@ nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
   j["name"] = a.name;
   j["residue"] = a.residue_name;
   j["seq_num"] = a.seq_num;
-  j["icode"] = a.icode ? std::string(1, a.icode) : std::string();
+  j["icode"] = molecule::icode_text(a.icode);
   j["chain"] = a.chain;
   j["area"] = area;
   return j;
@@ -137,7 +137,7 @@ int run_surface(const SurfaceOptions& opt) {
         if (structure) {
           const molecule::Atom& a = (*balls.atoms)[i];
           std::printf("%s", fmt::format("{} {} {} {}{} {} {:.3f}\n", a.serial, a.name, a.residue_name, a.seq_num,
-                                        a.icode ? std::string(1, a.icode) : std::string(), a.chain, areas[i])
+                                        molecule::icode_text(a.icode), a.chain, areas[i])
                                 .c_str());
         } else {
           std::printf("%s", fmt::format("{} {:.3f}\n", i, areas[i]).c_str());

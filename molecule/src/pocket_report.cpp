@@ -22,8 +22,6 @@ double score(double x) { return rounded(x, 1e4); }
 
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
-std::string icode_text(char icode) { return icode ? std::string(1, icode) : std::string(); }
-
 // Residue identity: chain, number, insertion code and name.
 auto residue_key(const Atom& a) { return std::tie(a.chain, a.seq_num, a.icode, a.residue_name); }
 

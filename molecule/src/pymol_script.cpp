@@ -88,7 +88,7 @@ std::vector<std::string> residue_clauses(const std::string& obj, const std::vect
     const auto [it, added] = clause_of.try_emplace({a.chain, a.seq_num, a.icode}, clauses.size());
     if (added) {
       clauses.push_back("(" + obj + " and chain " + selection_word(a.chain) + " and resi " +
-                        selection_word(std::to_string(a.seq_num) + (a.icode ? std::string(1, a.icode) : "")) +
+                        selection_word(std::to_string(a.seq_num) + icode_text(a.icode)) +
                         " and name ");
       names.emplace_back();
     }

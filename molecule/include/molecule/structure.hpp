@@ -78,6 +78,9 @@ struct Atom {
   double radius = 0;         // A, from molecule/radii.hpp
 };
 
+// The insertion code as text: "" for none.
+inline std::string icode_text(char icode) { return icode ? std::string(1, icode) : std::string(); }
+
 // A ligand, ion or other non-polymer, non-water residue, with its heavy atoms.
 struct HeteroGroup {
   std::string residue_name;
