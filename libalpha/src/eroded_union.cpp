@@ -8,6 +8,7 @@
 #include <string>
 
 #include "alpha/error.hpp"
+#include "alpha/sizes.hpp"
 #include "compensated_sum.hpp"
 
 namespace alpha {
@@ -69,7 +70,7 @@ bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double
   return false;
 }
 
-// The circle where the spheres (p_i, w_i) and (p_j, w_j) meet, with a frame:
+// The circle where the spheres of an edge (p_i, w_i), (p_j, w_j) meet, with a frame:
 // center o, unit axis w from p_i to p_j, unit e1, e2 spanning its plane;
 // z_i, z_j: the centers' coordinates along w from o.
 struct Circle {
@@ -80,7 +81,9 @@ struct Circle {
   double angle(const Vec3& v) const { return wrap(std::atan2(dot(v, e2), dot(v, e1))); }
 };
 
-Circle circle_of(const Vec3& pi, double wi, const Vec3& pj, double wj) {
+Circle circle_of(const Triangulation& t, const std::array<Index, 2>& edge) {
+  const Vec3 &pi = t.point(edge[0]), &pj = t.point(edge[1]);
+  const double wi = t.weight(edge[0]), wj = t.weight(edge[1]);
   Circle c;
   const Vec3 d = pj - pi;
   const double len = norm(d);
@@ -206,13 +209,10 @@ public:
       : eu_(eu), t_(eu.balls_->complex().triangulation()), s_(eu.balls_->complex().simplices()), r_(eu.r_),
         tol_(eu.tolerance_) {}
 
-  // The pieces of edge e's arcs inside `sector`, integrated.
-  LayerShare arcs(Index e, const Arc& sector) const {
+  // The pieces of edge e's arcs (on circle c) inside `sector`, integrated.
+  LayerShare arcs(Index e, const Circle& c, const Arc& sector) const {
     LayerShare out;
     const std::vector<Arc> pieces = clip(edge_arcs(e), sector);
-    if (pieces.empty()) return out;
-    const auto& v = s_.edge(e);
-    const Circle c = circle_of(t_.point(v[0]), t_.weight(v[0]), t_.point(v[1]), t_.weight(v[1]));
     for (const Arc& piece : pieces) {
       const int parts = int(std::ceil(piece.length / kMaxPiece));
       for (int k = 0; k < parts; ++k) {
@@ -228,36 +228,35 @@ public:
     return out;
   }
 
-  // The sector of cell c about its edge (local vertices x, y): between the
-  // half-planes through its two other vertices, the short way round.
-  Arc sector(Index c, int x, int y) const {
+  // The pieces of edge e's arcs in the sector of cell c about it (local
+  // vertices x, y): between the half-planes through its two other vertices,
+  // the short way round.
+  LayerShare cell_arcs(Index c, int x, int y, Index e) const {
     const auto& v = t_.cell(c).v;
-    const Index e = s_.find_edge(v[x], v[y]);
-    const auto& ev = s_.edge(e);
-    const Circle frame = circle_of(t_.point(ev[0]), t_.weight(ev[0]), t_.point(ev[1]), t_.weight(ev[1]));
+    const Circle frame = circle_of(t_, s_.edge(e));
     std::array<double, 2> phi;
     int n = 0;
     for (int k = 0; k < 4; ++k)
       if (k != x && k != y) phi[n++] = frame.angle(t_.point(v[k]) - frame.o);
     const double span = wrap(phi[1] - phi[0]);
-    return span <= kPi ? Arc{phi[0], span} : Arc{phi[1], kTwoPi - span};
+    return arcs(e, frame, span <= kPi ? Arc{phi[0], span} : Arc{phi[1], kTwoPi - span});
   }
 
   // The whole circle of edge e, split where its ring's half-planes meet it
   // (the same pieces as the sectors of its cells).
   LayerShare all_arcs(Index e) const {
     const auto& ev = s_.edge(e);
-    const Circle frame = circle_of(t_.point(ev[0]), t_.weight(ev[0]), t_.point(ev[1]), t_.weight(ev[1]));
+    const Circle frame = circle_of(t_, ev);
     std::vector<double> cuts;
     for (Index f : s_.edge_triangles(e))
       for (Index k : s_.triangle(f))
         if (k != ev[0] && k != ev[1]) cuts.push_back(frame.angle(t_.point(k) - frame.o));
     std::sort(cuts.begin(), cuts.end());
     LayerShare out;
-    if (cuts.empty()) return arcs(e, {0, kTwoPi});
+    if (cuts.empty()) return arcs(e, frame, {0, kTwoPi});
     for (std::size_t k = 0; k < cuts.size(); ++k) {
       const double next = k + 1 < cuts.size() ? cuts[k + 1] : cuts[0] + kTwoPi;
-      const LayerShare x = arcs(e, {cuts[k], next - cuts[k]});
+      const LayerShare x = arcs(e, frame, {cuts[k], next - cuts[k]});
       out.volume += x.volume;
       out.area += x.area;
     }
@@ -342,7 +341,7 @@ private:
       for (Index e : s_.vertex_edges(k)) {
         const auto& v = s_.edge(e);
         if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
-        const Circle c = circle_of(t_.point(v[0]), t_.weight(v[0]), t_.point(v[1]), t_.weight(v[1]));
+        const Circle c = circle_of(t_, v);
         const Vec3 y = center - c.o;
         const double z = dot(y, c.w), s = norm(y - z * c.w);
         if ((s - c.rho) * (s - c.rho) + z * z < radius * radius) h.circles.emplace_back(e, c);
@@ -560,7 +559,7 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
     arc_start_[e] = arcs_.size();
     if (r == 0 || !balls.in_dual_complex_edge(e)) continue;
     const auto& v = s.edge(e);
-    const Circle c = circle_of(t.point(v[0]), t.weight(v[0]), t.point(v[1]), t.weight(v[1]));
+    const Circle c = circle_of(t, v);
     if (c.rho <= tolerance_) continue;  // touching balls: no arc worth a piece
     std::vector<Arc> set{{0, kTwoPi}};
     for (Index f : s.edge_triangles(e)) {
@@ -589,22 +588,22 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
 
   // Vertices: the two points where the spheres of a triangle of K meet,
   // kept when no apex of its two cells covers them (on its Voronoi edge).
+  const SizeKernel kernel = ac.size_kernel();
   vertex_start_.assign(s.num_triangles() + 1, 0);
   for (Index f = 0; f < s.num_triangles(); ++f) {
     vertex_start_[f] = vertices_.size();
     if (r == 0 || !balls.in_dual_complex_triangle(f)) continue;
     const auto v = s.triangle(f);
-    const Vec3 p0 = t.point(v[0]), a = t.point(v[1]) - p0, b = t.point(v[2]) - p0, normal = cross(a, b);
-    const double nn = dot(normal, normal), w0 = t.weight(v[0]);
+    const Vec3 p0 = t.point(v[0]), normal = cross(t.point(v[1]) - p0, t.point(v[2]) - p0);
+    const double nn = dot(normal, normal);
     if (nn == 0) continue;
-    // The point of the plane with equal power to the three balls.
-    const double alpha_a = (dot(a, a) + w0 - t.weight(v[1])) / 2, alpha_b = (dot(b, b) + w0 - t.weight(v[2])) / 2;
-    const Vec3 x = (1 / nn) * (alpha_a * cross(b, normal) + alpha_b * cross(normal, a));
+    // The point of the plane with equal power to the three balls (the
+    // triangle's orthocentre); the spheres meet above and below it.
+    const Vec3 z0 = kernel.center(Simplex(v[0], v[1], v[2]));
     // Three spheres meeting (almost) in their centers' plane: a flat cone,
     // and the two points within rounding of each other.
-    const double h_sq = w0 - dot(x, x);
+    const double h_sq = t.weight(v[0]) - dot(z0 - p0, z0 - p0);
     if (h_sq <= 1e6 * tolerance_ * tolerance_) continue;
-    const Vec3 z0 = p0 + x;
     const double h = std::sqrt(h_sq / nn);
     const auto cells = s.triangle_cells(f);
     for (const double side : {1.0, -1.0}) {
@@ -673,7 +672,7 @@ LayerShare ErodedUnion::cell_share(Index c) const {
     for (int y = x + 1; y < 4; ++y) {
       const Index e = s.find_edge(v[x], v[y]);
       if (arc_start_[e] == arc_start_[e + 1]) continue;
-      const LayerShare piece = in.arcs(e, in.sector(c, x, y));
+      const LayerShare piece = in.cell_arcs(c, x, y, e);
       volume.add(piece.volume);
       area.add(piece.area);
     }

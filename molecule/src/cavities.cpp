@@ -223,13 +223,19 @@ private:
             const std::vector<Index>& region_mouths) const {
     double sa_volume = 0;
     for (Index c : cells) sa_volume += space[c].sa_empty;
-    if (std::max(0.0, sa_volume) >= options_.min_volume) list.push_back(build(cells, space, region_mouths));
+    // Fractional shares are exact only in sum: keep the sums, not below 0.
+    sa_volume = std::max(0.0, sa_volume);
+    if (sa_volume >= options_.min_volume) list.push_back(build(cells, space, region_mouths, sa_volume));
   }
 
-  Cavity build(const std::vector<Index>& cells, const RegionSpace& space,
-               const std::vector<Index>& region_mouths) const {
+  Cavity build(const std::vector<Index>& cells, const RegionSpace& space, const std::vector<Index>& region_mouths,
+               double sa_volume) const {
     Cavity cav;
     cav.cells = cells;
+    cav.sa_volume = sa_volume;
+    // The probe layer between the SA and the molecular surface whose
+    // nearest solvent-accessible point lies on the cavity's wall.
+    alpha::LayerShare layer;
     const Index id = cavity_of_[cells.front()];
     std::vector<Opening> openings;
     Index last = cells.front();
@@ -248,23 +254,15 @@ private:
       // of a complement component is its largest cell by rank, then id).
       if (ac_.cell_entry(c) >= ac_.cell_entry(last)) last = c;
       const CellSpace& m = space[c];
-      cav.sa_volume += m.sa_empty;
       cav.sa_area += m.sa_area;
       const double weight = std::max(0.0, m.sa_empty);
       weighted = weighted + weight * m.centroid;
       total_weight += weight;
-    }
-    // The probe layer between the SA and the molecular surface whose
-    // nearest solvent-accessible point lies on the cavity's wall.
-    alpha::LayerShare layer;
-    for (Index c : cells) {
       const alpha::LayerShare share = excluded_.cell_share(c);
       layer.volume += share.volume;
       layer.area += share.area;
     }
-    // Fractional shares are exact only in sum: keep the sums, not below 0.
-    cav.sa_volume = std::max(0.0, cav.sa_volume);
-    cav.sa_area = std::max(0.0, cav.sa_area);
+    cav.sa_area = std::max(0.0, cav.sa_area);  // a sum of fractional shares, as sa_volume
     cav.ms_volume = std::max(cav.sa_volume, cav.sa_volume + layer.volume);
     cav.ms_area = std::max(0.0, layer.area);
     cav.center = total_weight > 0
