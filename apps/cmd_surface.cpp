@@ -93,7 +93,9 @@ int run_surface(const SurfaceOptions& opt) {
     excluded = alpha::LayerShare{u.volume() - layer.volume, layer.area};
     spdlog::info("solvent-excluded surface: {:.3f} s", ses_time.seconds());
   }
-  const auto or_null = [&](double x) { return excluded ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr); };
+  const auto excluded_json = [&](double alpha::LayerShare::*measure) {
+    return excluded ? nlohmann::ordered_json((*excluded).*measure) : nlohmann::ordered_json(nullptr);
+  };
 
   if (opt.json) {
     nlohmann::ordered_json j;
@@ -101,8 +103,8 @@ int run_surface(const SurfaceOptions& opt) {
     j["probe"] = structure ? nlohmann::ordered_json(opt.input.probe) : nlohmann::ordered_json(nullptr);
     j["sa_area"] = u.area();
     j["sa_volume"] = u.volume();
-    j["ms_volume"] = or_null(excluded ? excluded->volume : 0);
-    j["ms_area"] = or_null(excluded ? excluded->area : 0);
+    j["ms_volume"] = excluded_json(&alpha::LayerShare::volume);
+    j["ms_area"] = excluded_json(&alpha::LayerShare::area);
     j["radii"] = structure ? std::string(molecule::kRadiusTable) : std::string("file");
     if (opt.per_atom) {
       j["per_atom"] = nlohmann::ordered_json::array();

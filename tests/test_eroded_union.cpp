@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <vector>
 
 #include "alpha/error.hpp"
 #include "alpha/eroded_union.hpp"
+#include "ball_union.hpp"
 #include "depth_oracle.hpp"
 #include "point_sets.hpp"
 
@@ -23,27 +23,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct Balls {
-  std::vector<Vec3> centers;
-  std::vector<double> radii;  // of the union (already inflated)
-};
+using Balls = testing::BallSet;
 
-// The union with everything it refers to, inside a hull of four far points
-// of radius 0 (they add nothing and keep every ball inside the hull).
-struct Union {
-  std::unique_ptr<Triangulation> t;
-  std::unique_ptr<AlphaComplex> ac;
-  std::unique_ptr<UnionOfBalls> u;
-  explicit Union(const Balls& b) {
-    std::vector<Vec3> p = b.centers;
-    std::vector<double> w;
-    for (double r : b.radii) w.push_back(r * r);
-    for (const Vec3& q : {Vec3{100, 0, 0}, Vec3{0, 100, 0}, Vec3{0, 0, 100}, Vec3{-100, -100, -100}})
-      p.push_back(q), w.push_back(0);
-    t = std::make_unique<Triangulation>(p, w);
-    ac = std::make_unique<AlphaComplex>(*t);
-    u = std::make_unique<UnionOfBalls>(*ac);
-  }
+// Every union here is padded: its balls stay inside the convex hull.
+struct Union : testing::BallUnion {
+  explicit Union(const Balls& b) : testing::BallUnion(b, true) {}
 };
 
 struct Measured {

@@ -12,6 +12,7 @@
 
 #include "alpha/error.hpp"
 #include "alpha/union_of_balls.hpp"
+#include "ball_union.hpp"
 #include "point_sets.hpp"
 
 using namespace alpha;
@@ -22,31 +23,8 @@ constexpr double kPi = std::numbers::pi;
 
 double dist2(const Vec3& a, const Vec3& b) { return dot(a - b, a - b); }
 
-struct BallSet {
-  std::vector<Vec3> centers;
-  std::vector<double> radii;
-};
-
-// The union with its triangulation and complex kept alive. Inputs with
-// fewer than 4 balls get 4 far points of radius 0 (they add nothing).
-struct Union {
-  std::unique_ptr<Triangulation> t;
-  std::unique_ptr<AlphaComplex> ac;
-  std::unique_ptr<UnionOfBalls> u;
-  explicit Union(const BallSet& s, bool pad = false) {
-    std::vector<Vec3> p = s.centers;
-    std::vector<double> w;
-    for (double r : s.radii) w.push_back(r * r);
-    if (pad)
-      for (const Vec3& q : {Vec3{100, 0, 0}, Vec3{0, 100, 0}, Vec3{0, 0, 100}, Vec3{-100, -100, -100}})
-        p.push_back(q), w.push_back(0);
-    t = std::make_unique<Triangulation>(p, w);
-    ac = std::make_unique<AlphaComplex>(*t);
-    u = std::make_unique<UnionOfBalls>(*ac);
-  }
-  double ball_area(std::size_t i) const { return u->ball_areas()[i]; }
-  double ball_volume(std::size_t i) const { return u->ball_volumes()[i]; }
-};
+using testing::BallSet;
+using Union = testing::BallUnion;
 
 // ---- the slice oracle ------------------------------------------------------
 
