@@ -216,6 +216,15 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     std::vector<Index> tri(triangle.begin(), triangle.end());
     std::sort(tri.begin(), tri.end());
     CHECK(tn.lining_atoms == tri);
+    // The killing triangle is critical (not attached), and the bottleneck's
+    // probe centre, its orthocentre, has power death_alpha_sq to each of
+    // the three balls (grown, they meet there).
+    CHECK(!b.complex.triangle_interval(tn.bottleneck_triangle).attached);
+    for (Index a : tri) {
+      const Vec3 d = tn.bottleneck_center - b.points[a];
+      const double w = molecule::ball_weight(b.radii[a], b.probe);
+      CHECK(dot(d, d) - w == Approx(tn.death_alpha_sq).margin(1e-9 * (w + dot(d, d))));
+    }
     if (k > 0) CHECK(cav.tunnels[k - 1].death_alpha_sq >= tn.death_alpha_sq);
   }
 }
@@ -317,6 +326,7 @@ TEST_CASE("Cavities: a ring of balls is a tunnel with its analytic bottleneck", 
   // and the largest probe through the ring's centre touches all 12 atoms.
   CHECK(tn.death_alpha_sq == Approx(25 - rho * rho).epsilon(1e-12));
   CHECK(tn.bottleneck_radius == Approx(5 - r).epsilon(1e-12));
+  CHECK(norm(tn.bottleneck_center) < 1e-12);  // the ring's centre
   for (Index a : tn.lining_atoms) CHECK(a < 12);
   CHECK(cav.voids.empty());
 }

@@ -243,6 +243,11 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
     CHECK(t["death_alpha_sq"].get<double>() > 0);
     if (i > 0) CHECK(t["death_alpha_sq"].get<double>() <= j["tunnels"][i - 1]["death_alpha_sq"].get<double>());
     check_number(t, "bottleneck_radius");
+    const alpha::Vec3& c = cav.tunnels[i].bottleneck_center;
+    REQUIRE(t["bottleneck_center"].size() == 3);
+    CHECK(t["bottleneck_center"][0].get<double>() == Approx(c.x).margin(1e-3));
+    CHECK(t["bottleneck_center"][1].get<double>() == Approx(c.y).margin(1e-3));
+    CHECK(t["bottleneck_center"][2].get<double>() == Approx(c.z).margin(1e-3));
     CHECK(t["lining_atoms"].size() == 3);  // the bottleneck triangle
     CHECK(t["lining_residues"].size() >= 1);
     CHECK(t["lining_residues"].size() <= 3);
@@ -366,7 +371,22 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   };
   check(r.report["pockets"], colors.pockets, "pocket");
   check(r.report["voids"], colors.voids, "void");
-  CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size());
+  // Tunnels: the bottleneck's atoms, and a sphere of the bottleneck radius
+  // at its centre.
+  const json& tunnels = r.report["tunnels"];
+  REQUIRE(!tunnels.empty());
+  for (std::size_t i = 0; i < tunnels.size(); ++i) {
+    const std::string name = "tunnel_" + std::to_string(i + 1);
+    INFO(name);
+    CHECK(selected[name].size() == 3);
+    REQUIRE(centers.count(name + "_bottleneck") == 1);
+    for (int k = 0; k < 3; ++k)
+      CHECK(centers[name + "_bottleneck"][k] ==
+            Approx(tunnels[i]["bottleneck_center"][k].get<double>()).margin(1.1e-3));
+    CHECK(pml.find("pseudoatom " + name + "_bottleneck, ") != std::string::npos);
+  }
+  CHECK(pml.find("show spheres, tunnel_*_bottleneck\n") != std::string::npos);
+  CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size() + tunnels.size());
 }
 
 TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavity", "[pocket_outputs]") {
@@ -377,20 +397,30 @@ TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavi
     if (line.rfind("HETATM", 0) != 0) continue;
     CHECK(line.size() == 80);
     CHECK(line.substr(17, 3) == "STP");
-    centers += line.substr(12, 4) == " CEN";
+    centers += line.substr(12, 4) == " CEN" || line.substr(12, 4) == " BTN";
   }
-  CHECK(centers == r.search.cavities.pockets.size() + r.search.cavities.voids.size());
+  const std::vector<molecule::Tunnel>& tunnels = r.search.cavities.tunnels;
+  REQUIRE(!tunnels.empty());
+  CHECK(centers == r.search.cavities.pockets.size() + r.search.cavities.voids.size() + tunnels.size());
 
   molecule::StructureOptions keep;
   keep.keep_hetero = true;
   const molecule::Structure back = molecule::read_structure(r.file("pockets.pdb").string(), keep);
   REQUIRE(back.hetero_groups.size() == centers);
-  std::map<std::string, std::size_t> next_rank{{"P", 1}, {"V", 1}};
+  std::map<std::string, std::size_t> next_rank{{"P", 1}, {"V", 1}, {"T", 1}};
   for (const molecule::HeteroGroup& g : back.hetero_groups) {
     INFO(g.chain << g.seq_num);
     CHECK(g.residue_name == "STP");
     REQUIRE(next_rank.count(g.chain) == 1);
     CHECK(std::size_t(g.seq_num) == next_rank[g.chain]++);  // residue number = rank
+    if (g.chain == "T") {  // a tunnel: its bottleneck, B = its radius
+      const molecule::Tunnel& t = tunnels[std::size_t(g.seq_num) - 1];
+      REQUIRE(g.atoms.size() == 1);
+      CHECK(g.atoms[0].name == "BTN");
+      CHECK(g.atoms[0].position.y == Approx(t.bottleneck_center.y).margin(1e-3));
+      CHECK(g.atoms[0].b_factor == Approx(t.bottleneck_radius).margin(0.006));
+      continue;
+    }
     const molecule::Cavity& c =
         (g.chain == "P" ? r.search.cavities.pockets : r.search.cavities.voids)[std::size_t(g.seq_num) - 1];
     REQUIRE(g.atoms.front().name == "CEN");

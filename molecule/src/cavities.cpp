@@ -100,6 +100,10 @@ Tunnel make_tunnel(const alpha::AlphaComplex& ac, const alpha::PersistencePair& 
     const double grown_sq = ball_weight(radii[i], probe) + tn.death_alpha_sq;
     tn.bottleneck_radius = std::min(tn.bottleneck_radius, std::sqrt(grown_sq) - radii[i]);
   }
+  // The triangle is critical, its own size the death: an attached one
+  // enters with the tetrahedron it is a free face of, a pair that changes
+  // no Betti number, so it creates the void the tetrahedron fills.
+  tn.bottleneck_center = ac.size_kernel().center(alpha::Simplex(tri[0], tri[1], tri[2]));
   tn.lining_atoms.assign(tri.begin(), tri.end());
   std::sort(tn.lining_atoms.begin(), tn.lining_atoms.end());
   return tn;

@@ -64,13 +64,16 @@ PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, co
   };
   write(cavities.pockets, 'P');
   write(cavities.voids, 'V');
+  for (std::size_t i = 0; i < cavities.tunnels.size(); ++i)
+    pdb.hetatm(" BTN", 'T', i + 1, cavities.tunnels[i].bottleneck_center, cavities.tunnels[i].bottleneck_radius);
 
   PocketPdb out;
   out.left_out = pdb.left_out();
   remark(out.text, title);
   remark(out.text, "cavities as pseudo-atoms: residue STP, residue number = rank,");
   remark(out.text, "chain P = pockets, chain V = voids; atom CEN = cavity centre,");
-  remark(out.text, "atom SNK = orthocentre of a sink tetrahedron (B = its radius, A)");
+  remark(out.text, "atom SNK = orthocentre of a sink tetrahedron (B = its radius, A);");
+  remark(out.text, "chain T = tunnels, atom BTN = bottleneck centre (B = its radius, A)");
   if (out.left_out > 0)
     remark(out.text, std::to_string(out.left_out) + " pseudo-atoms left out: beyond the PDB columns' range");
   out.text += pdb.records();

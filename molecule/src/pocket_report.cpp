@@ -115,6 +115,7 @@ json tunnel_list(const PocketRun& run) {
                    {"birth_alpha_sq", t.birth_alpha_sq},
                    {"death_alpha_sq", t.death_alpha_sq},
                    {"bottleneck_radius", length(t.bottleneck_radius)},
+                   {"bottleneck_center", point(t.bottleneck_center)},
                    {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
                    {"lining_residues", lining_residues(atoms, t.lining_atoms)}});
   return out;

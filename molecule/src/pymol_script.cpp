@@ -93,10 +93,28 @@ std::vector<std::string> residue_clauses(const std::string& obj, const std::vect
       names.emplace_back();
     }
     std::string& n = names[it->second];
-    n += (n.empty() ? "" : "+") + selection_word(a.name);
+    if (!n.empty()) n += '+';
+    n += selection_word(a.name);
   }
   for (std::size_t k = 0; k < clauses.size(); ++k) clauses[k] += names[k] + ")";
   return clauses;
+}
+
+// "select NAME, ..." lines for the atoms, kResiduesPerLine residues a line.
+std::string select_lines(const std::string& name, const std::vector<std::string>& clauses) {
+  std::string s;
+  for (std::size_t k = 0; k < clauses.size() || k == 0; k += kResiduesPerLine) {
+    std::string part;
+    for (std::size_t j = k; j < std::min(clauses.size(), k + kResiduesPerLine); ++j)
+      part += (part.empty() ? "" : " or ") + clauses[j];
+    if (part.empty()) part = "none";
+    s += "select " + name + ", " + (k == 0 ? part : name + " or " + part) + "\n";
+  }
+  return s;
+}
+
+std::string position(const alpha::Vec3& p) {
+  return "pos=[" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + "]";
 }
 
 }  // namespace
@@ -110,7 +128,8 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   s += "# alphapocket " + run.version + ": pockets of " + run.file + "\n";
   s += "# Run with `pymol pockets.pml` or, inside PyMOL, `@pockets.pml`. Pockets and voids are\n";
   s += "# coloured by site rank (report.json sites); pocket_N selects the atoms lining pocket N and\n";
-  s += "# pocket_N_center is its centre (void_N, void_N_center likewise).\n";
+  s += "# pocket_N_center is its centre (void_N, void_N_center likewise); tunnel_N selects the three\n";
+  s += "# atoms of tunnel N's bottleneck, tunnel_N_bottleneck is the largest probe passing it (cyan).\n";
   const StructureReport& report = run.structure->report;
   if (report.models > 1) {
     // PyMOL loads every model as a state: keep the one searched.
@@ -132,16 +151,8 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   for (const Named& c : cavities) {
     s += "set_color ap_" + c.name + ", [" + std::to_string(c.color.r) + ", " + std::to_string(c.color.g) + ", " +
          std::to_string(c.color.b) + "]\n";
-    const std::vector<std::string> clauses = residue_clauses(obj, atoms, c.cavity->lining_atoms);
-    for (std::size_t k = 0; k < clauses.size() || k == 0; k += kResiduesPerLine) {
-      std::string part;
-      for (std::size_t j = k; j < std::min(clauses.size(), k + kResiduesPerLine); ++j)
-        part += (part.empty() ? "" : " or ") + clauses[j];
-      if (part.empty()) part = "none";
-      s += "select " + c.name + ", " + (k == 0 ? part : c.name + " or " + part) + "\n";
-    }
-    const alpha::Vec3& p = c.cavity->center;
-    s += "pseudoatom " + c.name + "_center, pos=[" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + "]\n";
+    s += select_lines(c.name, residue_clauses(obj, atoms, c.cavity->lining_atoms));
+    s += "pseudoatom " + c.name + "_center, " + position(c.cavity->center) + "\n";
     s += "color ap_" + c.name + ", " + c.name + "_center\n";
   }
   // Worst rank first: the best one's colour is the one left on shared atoms.
@@ -152,6 +163,22 @@ std::string pymol_script(const PocketRun& run, const std::string& structure_path
   if (!cavities.empty()) {
     s += "show spheres, *_center\n";
     s += "group centers, *_center\n";
+  }
+  // Tunnels: the bottleneck's atoms, and the largest probe passing it as a
+  // sphere of its radius.
+  const std::vector<Tunnel>& tunnels = run.search->cavities.tunnels;
+  for (std::size_t i = 0; i < tunnels.size(); ++i) {
+    const std::string name = "tunnel_" + std::to_string(i + 1);
+    s += select_lines(name, residue_clauses(obj, atoms, tunnels[i].lining_atoms));
+    s += "pseudoatom " + name + "_bottleneck, " + position(tunnels[i].bottleneck_center) +
+         ", vdw=" + number(tunnels[i].bottleneck_radius) + "\n";
+  }
+  if (!tunnels.empty()) {
+    s += "color cyan, tunnel_*_bottleneck\n";
+    s += "show spheres, tunnel_*_bottleneck\n";
+    s += "set sphere_scale, 1.0, tunnel_*_bottleneck\n";
+    s += "set sphere_transparency, 0.5, tunnel_*_bottleneck\n";
+    s += "group tunnels, tunnel_*_bottleneck\n";
   }
   s += "deselect\n";
   s += "orient " + obj + "\n";

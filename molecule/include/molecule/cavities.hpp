@@ -129,6 +129,10 @@ struct Tunnel {
   // unweighted points); for unequal radii an estimate (grown balls and
   // excluded balls differ slightly); >= probe, A.
   double bottleneck_radius = 0;
+  // The centre of that probe: the killing triangle's orthocentre, where the
+  // grown balls meet at the death (its power to each lining atom's ball is
+  // death_alpha_sq).
+  alpha::Vec3 bottleneck_center{};
   std::vector<alpha::Index> lining_atoms;  // vertices of the bottleneck triangle, sorted
 };
 
