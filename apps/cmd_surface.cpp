@@ -54,9 +54,11 @@ Balls read_balls(const InputOptions& opt) {
     throw std::runtime_error(opt.file +
                              ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
   }
+  InputOptions any_size = opt;
+  any_size.structure.min_atoms = 1;  // one atom has a surface (see run_surface)
   Balls b;
   std::vector<molecule::Atom> atoms;
-  b.set = read_input(opt, &atoms);
+  b.set = read_input(any_size, &atoms);
   if (structure) b.atoms = std::move(atoms);
   return b;
 }
@@ -74,9 +76,12 @@ nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
 }
 
 int run_surface(const SurfaceOptions& opt) {
-  const Balls balls = read_balls(opt.input);
+  Balls balls = read_balls(opt.input);
   const std::size_t n = balls.set.points.size();
   Stopwatch build_time;
+  // Any set of balls has a union, but a triangulation needs four points
+  // not in one plane: far points make a small or flat molecule one.
+  if (alpha::affine_dimension(balls.set.points) < 3) alpha::add_far_points(balls.set.points, balls.set.weights);
   const std::unique_ptr<alpha::Triangulation> t = triangulate(balls.set, opt.input.file);
   const alpha::AlphaComplex complex(*t);
   const double build_seconds = build_time.seconds();

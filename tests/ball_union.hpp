@@ -17,16 +17,13 @@ struct BallUnion {
   std::unique_ptr<alpha::Triangulation> t;
   std::unique_ptr<alpha::AlphaComplex> ac;
   std::unique_ptr<alpha::UnionOfBalls> u;
-  // pad: add 4 far points of radius 0 (they add nothing): for inputs of
-  // fewer than 4 balls, or to keep every ball inside the convex hull.
+  // pad: add 4 far points of radius 0 (alpha::add_far_points): for inputs
+  // of fewer than 4 balls, or to keep every ball inside the convex hull.
   explicit BallUnion(const BallSet& s, bool pad = false) {
     std::vector<alpha::Vec3> p = s.centers;
     std::vector<double> w;
     for (double r : s.radii) w.push_back(r * r);
-    if (pad)
-      for (const alpha::Vec3& q :
-           {alpha::Vec3{100, 0, 0}, alpha::Vec3{0, 100, 0}, alpha::Vec3{0, 0, 100}, alpha::Vec3{-100, -100, -100}})
-        p.push_back(q), w.push_back(0);
+    if (pad) alpha::add_far_points(p, w);
     t = std::make_unique<alpha::Triangulation>(p, w);
     ac = std::make_unique<alpha::AlphaComplex>(*t);
     u = std::make_unique<alpha::UnionOfBalls>(*ac);

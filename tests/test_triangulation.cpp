@@ -156,6 +156,25 @@ TEST_CASE("Result does not depend on input order for generic points", "[triangul
   CHECK(cell_shapes(a) == cell_shapes(b));
 }
 
+TEST_CASE("Affine dimension: exact, and 3 exactly when a triangulation exists", "[triangulation][degenerate]") {
+  using V = std::vector<Vec3>;
+  CHECK(affine_dimension(V{}) == -1);
+  CHECK(affine_dimension(V{{1, 2, 3}, {1, 2, 3}}) == 0);
+  CHECK(affine_dimension(V{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}) == 1);
+  // Far off the origin, in a tilted plane: 1e8 + small offsets round to no
+  // float filter's comfort, the exact stage decides.
+  V plane;
+  for (int i = 0; i < 50; ++i) {
+    const double u = i % 7, v = i / 7;
+    plane.push_back({1e8 + u, 1e8 + v, 1e8 + u + v});
+  }
+  CHECK(affine_dimension(plane) == 2);
+  plane.push_back({1e8 + 3, 1e8 + 2, 1e8 + 5 + std::ldexp(1.0, -20)});  // just off the plane
+  CHECK(affine_dimension(plane) == 3);
+  CHECK_NOTHROW(Triangulation(plane));
+  CHECK(affine_dimension(testing::grid_points(3)) == 3);
+}
+
 TEST_CASE("Unusable input gives a clear error", "[triangulation][errors]") {
   using V = std::vector<Vec3>;
   CHECK_THROWS_WITH(Triangulation(V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), Catch::Contains("at least 4 distinct"));

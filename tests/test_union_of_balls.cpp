@@ -374,6 +374,35 @@ TEST_CASE("union of balls: degenerate grids against numerical integration", "[un
   }
 }
 
+TEST_CASE("union of balls: far points make balls on a line or a plane a union, and add nothing", "[union][degenerate]") {
+  // Three unit balls on a line, 1 apart: the end balls are tangent at the
+  // middle one's centre, so only neighbours overlap, in lenses of caps of
+  // height 1/2: area 3 * 4 pi - 4 pi, volume 3 * 4/3 pi - 2 * 5 pi / 12.
+  const Union line({{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {1, 1, 1}}, true);
+  CHECK(line.u->area() == Approx(8 * kPi).epsilon(1e-13));
+  CHECK(line.u->volume() == Approx(19 * kPi / 6).epsilon(1e-13));
+  // A flat 3x3 grid (cospherical squares): every kind of term, in one plane.
+  BallSet flat;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) flat.centers.push_back({1.1 * i, 1.1 * j, 0});
+  flat.radii.assign(flat.centers.size(), 0.8);
+  check_against_oracle(flat, 1e-9, true);
+  // Around a set that needs none, they leave every ball's measures as they
+  // were, and lie farther from each ball than its radius.
+  const BallSet b = random_balls(40, 7, 4.0, 0.4, 1.5);
+  const Union plain(b), padded(b, true);
+  CHECK(padded.u->area() == Approx(plain.u->area()).epsilon(1e-13));
+  CHECK(padded.u->volume() == Approx(plain.u->volume()).epsilon(1e-13));
+  for (std::size_t i = 0; i < b.centers.size(); ++i) {
+    CHECK(padded.ball_area(i) == Approx(plain.ball_area(i)).margin(1e-12));
+    for (std::size_t k = b.centers.size(); k < b.centers.size() + 4; ++k)
+      CHECK(norm(padded.t->point(k) - b.centers[i]) > 2 * b.radii[i]);
+  }
+  std::vector<Vec3> p{{0, 0, 0}};
+  std::vector<double> w;
+  CHECK_THROWS_WITH(add_far_points(p, w), Catch::Contains("one weight per point"));
+}
+
 TEST_CASE("union of balls: random balls against Monte Carlo", "[union]") {
   const BallSet s = random_balls(40, 7, 4.0, 0.5, 1.3);
   const Union un(s);

@@ -48,7 +48,41 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
     fail("the points span only " + std::to_string(extent) + " (below 1e-100): their sizes would underflow");
 }
 
+// The dimension of the affine hull of the points `order` lists (-1 if none,
+// 0 to 3), and in `first` the points that span it, the first found in
+// order: a; b, the first point other than a; c, the first off the line ab;
+// d, the first off the plane abc. Exact.
+int spanning_points(Kernel& kernel, const std::vector<Vec3>& p, const std::vector<Index>& order,
+                    std::array<Index, 4>& first) {
+  if (order.empty()) return -1;
+  const Index a = order[0];
+  const auto find = [&](auto off) {
+    const auto it = std::find_if(order.begin(), order.end(), off);
+    return it == order.end() ? kNone : *it;
+  };
+  const Index b = find([&](Index i) { return p[i] != p[a]; });
+  if (b == kNone) return 0;
+  const Index c = find([&](Index i) {
+    for (int axis = 0; axis < 3; ++axis)  // collinear: coplanar with ab and each axis direction
+      if (kernel.orient3d(p[a], p[b], p[i], Kernel::axis_offset(p[a], axis)) != 0) return true;
+    return false;
+  });
+  if (c == kNone) return 1;
+  const Index d = find([&](Index i) { return kernel.orient3d(p[a], p[b], p[c], p[i]) != 0; });
+  if (d == kNone) return 2;
+  first = {a, b, c, d};
+  return 3;
+}
+
 }  // namespace
+
+int affine_dimension(const std::vector<Vec3>& points) {
+  Kernel kernel(points.data(), nullptr);
+  std::vector<Index> order(points.size());
+  std::iota(order.begin(), order.end(), Index(0));
+  std::array<Index, 4> first;
+  return spanning_points(kernel, points, order, first);
+}
 
 // The incremental construction; lives only while the triangulation is built.
 class Triangulation::Builder {
@@ -139,27 +173,11 @@ private:
     return reps;
   }
 
-  bool collinear(Index a, Index b, Index c) {
-    for (int axis = 0; axis < 3; ++axis)
-      if (kernel_.orient3d(t_.points_[a], t_.points_[b], t_.points_[c], Kernel::axis_offset(t_.points_[a], axis)) != 0)
-        return false;
-    return true;
-  }
-
   std::array<Index, 4> initial_simplex(const std::vector<Index>& order) {
-    const Index a = order[0], b = order[1];
-    std::size_t k = 2;
-    while (k < order.size() && collinear(a, b, order[k])) ++k;
-    if (k == order.size()) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
-    const Index c = order[k];
-    std::size_t l = k + 1;
-    while (l < order.size() && (l == k || kernel_.orient3d(a, b, c, order[l]) == 0)) ++l;
-    if (l == order.size()) {
-      l = 2;  // the non-coplanar point may come before c
-      while (l < k && kernel_.orient3d(a, b, c, order[l]) == 0) ++l;
-      if (l == k) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
-    }
-    std::array<Index, 4> v{a, b, c, order[l]};
+    std::array<Index, 4> v;
+    const int dimension = spanning_points(kernel_, t_.points_, order, v);
+    if (dimension == 1) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
+    if (dimension == 2) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
     if (kernel_.orient3d(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
     cells_.push_back({v, {1, 2, 3, 4}});
     for (int i = 0; i < 4; ++i) {

@@ -220,6 +220,26 @@ double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 
 }  // namespace
 
+void add_far_points(std::vector<Vec3>& points, std::vector<double>& weights) {
+  if (weights.size() != points.size()) fail("add_far_points: one weight per point is needed");
+  Vec3 lo = points.empty() ? Vec3{} : points.front(), hi = lo;
+  for (const Vec3& p : points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  double max_radius = 0;
+  for (double w : weights) max_radius = std::max(max_radius, std::sqrt(std::max(w, 0.0)));
+  const Vec3 center = 0.5 * (lo + hi);
+  // Every ball lies within reach of the centre; the points are twice as far
+  // (and 1 more: a single point ball still gets a tetrahedron of size).
+  const double reach = norm(hi - center) + max_radius;
+  const double d = 2 * reach + 1;
+  for (const Vec3& u : {Vec3{1, 1, 1}, Vec3{1, -1, -1}, Vec3{-1, 1, -1}, Vec3{-1, -1, 1}}) {
+    points.push_back(center + d * u);  // |u| = sqrt 3 > 1
+    weights.push_back(0);
+  }
+}
+
 bool UnionOfBalls::in_dual_complex_vertex(Index v) const {
   return complex_->triangulation().status(v) == PointStatus::vertex && complex_->vertex_interval(v).entry < level_;
 }

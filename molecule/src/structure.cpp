@@ -436,9 +436,9 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   if (out.atoms.empty())
     fail(name, "no atoms left after the selection (model " + model.name + " has " +
                    std::to_string(report.atoms_in_model) + " atoms; dropped: " + dropped_list(report) + ")");
-  if (out.atoms.size() < 4)
+  if (out.atoms.size() < options.min_atoms)
     fail(name, "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
-                   " after the selection, at least 4 are needed");
+                   " after the selection, at least " + std::to_string(options.min_atoms) + " are needed");
   return out;
 }
 

@@ -21,10 +21,9 @@ expect_rounded() {  # KEY DIGITS VALUE
   [[ "$got" == "$3" ]] || fail "\"$1\" rounds to '$got', expected '$3'"
 }
 
-# Two overlapping unit balls and two balls of radius 0 (the triangulation
-# needs four points that are not coplanar).
+# Two overlapping unit balls.
 two_balls() {
-  printf '0 0 0 1\n1 0 0 1\n0 50 0 0\n0 0 50 0\n' >"$tmp/two.xyz"
+  printf '0 0 0 1\n1 0 0 1\n' >"$tmp/two.xyz"
   echo "$tmp/two.xyz"
 }
 
@@ -109,13 +108,48 @@ case $case_name in
   weighted_file)
     run -q surface "$(two_balls)" --weighted --json --per-atom
     expect_json_object
-    expect_json atoms 4
+    expect_json atoms 2
     expect_json probe null
     expect_json ms_volume null
     expect_json radii '"file"'
     expect_rounded sa_volume 10 "$(rounded 7.0685834705770345 10)"  # 9 pi / 4
     expect_rounded sa_area 10 "$(rounded 18.84955592153876 10)"     # 6 pi
     grep -q '"per_atom":\[{"index":0,"area":9.42477796076938' "$tmp/out" || fail "per-ball area: 3 pi"
+    ;;
+  one_atom)
+    # A structure of one atom (or a flat one) has a surface: a CA (ProtOr
+    # 1.88 A) grown by the probe, area 4 pi 3.28^2; eroded, the atom itself.
+    printf 'ATOM      1  CA  GLY A   1       1.000   2.000   3.000  1.00  0.00           C\nEND\n' >"$tmp/one.pdb"
+    run -q surface "$tmp/one.pdb" --json
+    expect_json_object
+    expect_json atoms 1
+    expect_rounded sa_area 9 "$(rounded 135.19404161752163 9)"
+    expect_rounded sa_volume 9 "$(rounded 147.81215216849027 9)"
+    expect_rounded ms_area 9 "$(rounded 44.41458029939105 9)"  # 4 pi 1.88^2
+    expect_rounded ms_volume 9 "$(rounded 27.833136987618392 9)"
+    ;;
+  flat_molecule)
+    # Atoms in one plane (a ring of 6 carbons 1.4 A apart, as in benzene)
+    # have a surface though no 3D triangulation: it differs from the same
+    # ring with one atom lifted 0.001 A out of the plane by less than 0.01.
+    ring() {  # Z of the first atom
+      for k in 0 1 2 3 4 5; do
+        awk -v k="$k" -v z="$1" 'BEGIN { a = k * atan2(0, -1) / 3; if (k > 0) z = 0;
+          printf "HETATM%5d  C%d  BNZ A   1    %8.3f%8.3f%8.3f  1.00  0.00           C\n",
+                 k + 1, k + 1, 1.4 * cos(a), 1.4 * sin(a), z }'
+      done
+    }
+    ring 0 >"$tmp/flat.pdb"
+    ring 0.001 >"$tmp/lifted.pdb"
+    run -q surface "$tmp/lifted.pdb" --keep-hetero --json
+    lifted_sa=$(json_value sa_area) lifted_ms=$(json_value ms_volume)
+    run -q surface "$tmp/flat.pdb" --keep-hetero --json
+    expect_json_object
+    expect_json atoms 6
+    sa=$(json_value sa_area) ms=$(json_value ms_volume)
+    awk -v a="$sa" -v b="$lifted_sa" -v m="$ms" -v n="$lifted_ms" \
+      'BEGIN { exit !(a > 100 && m > 10 && (a - b)^2 < 1e-4 && (m - n)^2 < 1e-4) }' ||
+      fail "flat ring: SAS area $sa, molecular volume $ms; lifted: $lifted_sa, $lifted_ms"
     ;;
   unweighted_file)
     printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/points.xyz"

@@ -39,6 +39,10 @@ struct Cell {
   std::array<Index, 4> n;  // neighbours, n[k] opposite v[k]
 };
 
+// The dimension of the points' affine hull: -1 for none, 0 (all equal), 1
+// (on a line), 2 (on a plane) or 3, when they have a triangulation. Exact.
+int affine_dimension(const std::vector<Vec3>& points);
+
 class Triangulation {
 public:
   // Throws alpha::Error for unusable input: non-finite or out-of-range

@@ -69,6 +69,14 @@ struct CellCover {
   double area = 0;    // area of the union's boundary inside the cell
 };
 
+// Appends four balls of radius 0 (weight 0) around the balls (centres
+// `points`, squared radii `weights`), farther from each ball than its
+// radius: they add nothing to the union (no area, no volume, no ball of
+// the dual complex touches them) but make any set of balls, even one ball
+// or balls centred on a line or a plane, span 3D, so that it has a regular
+// triangulation. The input balls keep their indices.
+void add_far_points(std::vector<Vec3>& points, std::vector<double>& weights);
+
 class UnionOfBalls {
 public:
   // complex: the alpha complex of a triangulation whose weights are the

@@ -60,6 +60,9 @@ struct StructureOptions {
   bool keep_hydrogens = false;
   bool keep_waters = false;
   bool keep_hetero = false;
+  // Fewer atoms after the selection is an error: a triangulation needs 4
+  // (a union of balls, 1).
+  std::size_t min_atoms = 4;
 };
 
 struct Atom {
