@@ -75,8 +75,9 @@ std::string absolute_path(const std::string& file) {
 
 // "A:TYR:42 A:SER:43 ..." cut to fit `width` columns, with "(+N)" for the
 // residues left out.
-std::string residue_list(const std::vector<molecule::Atom>& atoms, const molecule::Cavity& c, std::size_t width) {
-  const std::vector<alpha::Index> residues = molecule::residues_of(atoms, c.lining_atoms);
+std::string residue_list(const std::vector<molecule::Atom>& atoms, const std::vector<alpha::Index>& lining,
+                         std::size_t width) {
+  const std::vector<alpha::Index> residues = molecule::residues_of(atoms, lining);
   std::string out;
   for (std::size_t k = 0; k < residues.size(); ++k) {
     const std::string id = molecule::residue_id(atoms[residues[k]]);
@@ -104,19 +105,25 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
   std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
               cavities.sa_area, cavities.sa_volume);
   std::printf("%s; written to %s/\n", cavity_counts(cavities).c_str(), outdir.c_str());
-  if (sites.empty()) return;
-  std::printf("\nsite  cavity       score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
-  const std::size_t prefix = 67;  // columns before the residues
-  for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
-    const molecule::Site& s = sites[i];
-    const molecule::Cavity& c = cavities.cavity(s);
-    std::printf("%4zu  %-10s %7.3f %11.1f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(),
-                c.score, c.sa_volume, c.ms_volume, c.depth, c.mouths.size(),
-                residue_list(structure.atoms, c, kSummaryWidth - prefix).c_str());
+  if (!sites.empty()) {
+    std::printf("\nsite  cavity       score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
+    const std::size_t prefix = 67;  // columns before the residues
+    for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
+      const molecule::Site& s = sites[i];
+      const molecule::Cavity& c = cavities.cavity(s);
+      std::printf("%4zu  %-10s %7.3f %11.1f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(),
+                  c.score, c.sa_volume, c.ms_volume, c.depth, c.mouths.size(),
+                  residue_list(structure.atoms, c.lining_atoms, kSummaryWidth - prefix).c_str());
+    }
+    if (sites.size() > kSummaryRows)
+      std::printf("(top %zu of %zu sites; all in %s/report.json, pockets in pockets.csv)\n", kSummaryRows,
+                  sites.size(), outdir.c_str());
   }
-  if (sites.size() > kSummaryRows)
-    std::printf("(top %zu of %zu sites; all in %s/report.json, pockets in pockets.csv)\n", kSummaryRows,
-                sites.size(), outdir.c_str());
+  if (!cavities.tunnels.empty()) {
+    const molecule::Tunnel& t = cavities.tunnels.front();
+    std::printf("\nwidest tunnel: bottleneck radius %.2f A between %s\n", t.bottleneck_radius,
+                residue_list(structure.atoms, t.lining_atoms, kSummaryWidth).c_str());
+  }
 }
 
 int run_pockets(const PocketsOptions& opt) {

@@ -51,6 +51,9 @@ case "$case_name" in
     [[ $pockets -ge 1 ]] || fail "no pockets in the summary"
     grep -q "^site  cavity .*lining residues$" "$tmp/out" || fail "no table in the summary"
     grep -qE '^ +1  pocket 1 .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for site 1"
+    [[ $tunnels -ge 1 ]] || fail "1a26A has tunnels"
+    grep -qE '^widest tunnel: bottleneck radius [0-9]+\.[0-9]{2} A between A:[A-Z]{3}:[0-9]+' "$tmp/out" ||
+      fail "no line for the widest tunnel"
     [[ $(wc -l <"$tmp/out") -le 24 ]] || fail "the summary is longer than one screen"
     expect_consistent 1a26A_pockets "$pockets" "$voids" ply
     grep -qF "/cmd.load(\"$tmp/work/1a26A.pdb\", \"1a26A\")" 1a26A_pockets/pockets.pml ||
