@@ -43,7 +43,8 @@ awk '$1 == 2 && $2 <= 0 && $3 > 0 { print $3 - $2, $0 }' persistence.txt | sort 
 # 4. The solvent-accessible alpha shape as a mesh for MeshLab.
 step shape "$pdb" --alpha-sq 0 -o sa_shape.ply
 
-# 5. Solvent-accessible area and volume, exact for the union of balls.
+# 5. Solvent-accessible area and volume, exact for the union of balls, and
+#    the solvent-excluded (molecular) surface: the union eroded by the probe.
 step surface "$pdb"
 
 # 6. Pockets, voids and tunnels, with every output file.
