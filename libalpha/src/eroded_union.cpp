@@ -188,16 +188,25 @@ struct SphericalTriangle {
     const Vec3 m = sg > 0 ? (1 / sg) * (std::sin((1 - sigma) * gamma) * dir[1] + std::sin(sigma * gamma) * dir[2])
                           : dir[1];
     const double theta = std::atan2(norm(cross(dir[0], m)), dot(dir[0], m)), st = std::sin(theta);
-    if (st <= 0 || sg <= 0) {  // a flat triangle
-      if (jacobian) *jacobian = 0;
-      return st <= 0 ? dir[0] : (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m);
-    }
     if (jacobian) {
-      const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
-      *jacobian = std::sin(s * theta) * theta * std::fabs(dot(dir[0], cross(m, dm))) / (st * st);
+      *jacobian = 0;  // a flat triangle
+      if (st > 0 && sg > 0) {
+        const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
+        *jacobian = std::sin(s * theta) * theta * std::fabs(dot(dir[0], cross(m, dm))) / (st * st);
+      }
     }
-    return (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m);
+    return st > 0 ? (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m) : dir[0];
   }
+};
+
+// Volumes and areas of pieces, summed compensated in the order added.
+struct LayerSum {
+  Sum volume, area;
+  void add(const LayerShare& x) {
+    volume.add(x.volume);
+    area.add(x.area);
+  }
+  LayerShare value() const { return {volume.value(), area.value()}; }
 };
 
 }  // namespace
@@ -639,23 +648,13 @@ LayerShare ErodedUnion::layer() const {
   const AlphaComplex& ac = balls_->complex();
   const Simplices& s = ac.simplices();
   const Integrator in(*this);
-  Sum volume, area;
-  for (std::size_t i = 0; i < shell_factor_.size(); ++i) {
-    volume.add(shell_factor_[i] * balls_->ball_areas()[i]);
-    area.add(contact_factor_[i] * balls_->ball_areas()[i]);
-  }
-  for (Index e = 0; e < s.num_edges(); ++e) {
-    if (arc_start_[e] == arc_start_[e + 1]) continue;
-    const LayerShare x = in.all_arcs(e);
-    volume.add(x.volume);
-    area.add(x.area);
-  }
-  for (std::size_t v = 0; v < vertices_.size(); ++v) {
-    const LayerShare x = in.cone(v);
-    volume.add(x.volume);
-    area.add(x.area);
-  }
-  return {volume.value(), area.value()};
+  LayerSum sum;
+  for (std::size_t i = 0; i < shell_factor_.size(); ++i)
+    sum.add({shell_factor_[i] * balls_->ball_areas()[i], contact_factor_[i] * balls_->ball_areas()[i]});
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (arc_start_[e] != arc_start_[e + 1]) sum.add(in.all_arcs(e));
+  for (std::size_t v = 0; v < vertices_.size(); ++v) sum.add(in.cone(v));
+  return sum.value();
 }
 
 LayerShare ErodedUnion::cell_share(Index c) const {
@@ -664,28 +663,20 @@ LayerShare ErodedUnion::cell_share(Index c) const {
   const Simplices& s = ac.simplices();
   if (t.is_infinite(c)) return {};
   const Integrator in(*this);
-  Sum volume, area;
-  volume.add(balls_->cell_area(c, shell_factor_));
-  area.add(balls_->cell_area(c, contact_factor_));
+  LayerSum sum;
+  sum.add({balls_->cell_area(c, shell_factor_), balls_->cell_area(c, contact_factor_)});
   const auto& v = t.cell(c).v;
   for (int x = 0; x < 4; ++x)
     for (int y = x + 1; y < 4; ++y) {
       const Index e = s.find_edge(v[x], v[y]);
-      if (arc_start_[e] == arc_start_[e + 1]) continue;
-      const LayerShare piece = in.cell_arcs(c, x, y, e);
-      volume.add(piece.volume);
-      area.add(piece.area);
+      if (arc_start_[e] != arc_start_[e + 1]) sum.add(in.cell_arcs(c, x, y, e));
     }
   for (int k = 0; k < 4; ++k) {
     const Index f = s.cell_triangle(c, k);
-    for (std::size_t p = vertex_start_[f]; p < vertex_start_[f + 1]; ++p) {
-      if (vertices_[p].cell != c) continue;
-      const LayerShare piece = in.cone(p);
-      volume.add(piece.volume);
-      area.add(piece.area);
-    }
+    for (std::size_t p = vertex_start_[f]; p < vertex_start_[f + 1]; ++p)
+      if (vertices_[p].cell == c) sum.add(in.cone(p));
   }
-  return {volume.value(), area.value()};
+  return sum.value();
 }
 
 }  // namespace alpha
