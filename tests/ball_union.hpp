@@ -20,16 +20,27 @@ struct BallUnion {
   // pad: add 4 far points of radius 0 (alpha::add_far_points): for inputs
   // of fewer than 4 balls, or to keep every ball inside the convex hull.
   explicit BallUnion(const BallSet& s, bool pad = false) {
-    std::vector<alpha::Vec3> p = s.centers;
     std::vector<double> w;
     for (double r : s.radii) w.push_back(r * r);
-    if (pad) alpha::add_far_points(p, w);
-    t = std::make_unique<alpha::Triangulation>(p, w);
-    ac = std::make_unique<alpha::AlphaComplex>(*t);
-    u = std::make_unique<alpha::UnionOfBalls>(*ac);
+    build(s.centers, std::move(w), pad);
+  }
+  // The balls of weighted points (weight = squared radius).
+  static BallUnion of_weighted(std::vector<alpha::Vec3> p, std::vector<double> w) {
+    BallUnion b;
+    b.build(std::move(p), std::move(w), false);
+    return b;
   }
   double ball_area(std::size_t i) const { return u->ball_areas()[i]; }
   double ball_volume(std::size_t i) const { return u->ball_volumes()[i]; }
+
+private:
+  BallUnion() = default;
+  void build(std::vector<alpha::Vec3> p, std::vector<double> w, bool pad) {
+    if (pad) alpha::add_far_points(p, w);
+    t = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w));
+    ac = std::make_unique<alpha::AlphaComplex>(*t);
+    u = std::make_unique<alpha::UnionOfBalls>(*ac);
+  }
 };
 
 }  // namespace testing

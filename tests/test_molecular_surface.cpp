@@ -11,18 +11,17 @@
 #include <vector>
 
 #include "alpha/eroded_union.hpp"
+#include "ball_union.hpp"
 #include "depth_oracle.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/structure.hpp"
 
 namespace {
 
-struct Union {
-  alpha::Triangulation t;
-  alpha::AlphaComplex complex;
-  alpha::UnionOfBalls balls;
-  explicit Union(molecule::AtomBalls b) : t(std::move(b.points), std::move(b.weights)), complex(t), balls(complex) {}
-};
+// The union of the atoms' balls.
+testing::BallUnion union_of(const molecule::AtomBalls& b) {
+  return testing::BallUnion::of_weighted(b.points, b.weights);
+}
 
 }  // namespace
 
@@ -30,17 +29,18 @@ TEST_CASE("molecular surface: area = -dV/dr, and between the vdW and SA unions, 
   for (const char* name : {"1fkgA.pdb", "1ytjA.pdb"}) {
     INFO(name);
     const auto atoms = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/" + name).atoms;
-    const Union sas(molecule::atom_balls(atoms, 1.4)), vdw(molecule::atom_balls(atoms, 0));
+    const testing::BallUnion sas = union_of(molecule::atom_balls(atoms, 1.4)),
+                             vdw = union_of(molecule::atom_balls(atoms, 0));
     const auto eroded = [&](double r) {
-      const alpha::LayerShare layer = alpha::ErodedUnion(sas.balls, r).layer();
-      return std::pair{sas.balls.volume() - layer.volume, layer.area};
+      const alpha::LayerShare layer = alpha::ErodedUnion(*sas.u, r).layer();
+      return std::pair{sas.u->volume() - layer.volume, layer.area};
     };
     const auto [volume, area] = eroded(1.4);
     const double h = 1e-4;
     CHECK(area == Approx(-(eroded(1.4 + h).first - eroded(1.4 - h).first) / (2 * h)).epsilon(2e-5));
-    CHECK(vdw.balls.volume() < volume);
-    CHECK(volume < sas.balls.volume());
-    CHECK(area < vdw.balls.area());  // the probe bridges the crevices between atoms
+    CHECK(vdw.u->volume() < volume);
+    CHECK(volume < sas.u->volume());
+    CHECK(area < vdw.u->area());  // the probe bridges the crevices between atoms
     CHECK(eroded(1.4) == std::pair{volume, area});  // deterministic
   }
 }
@@ -50,8 +50,8 @@ TEST_CASE("molecular surface: the volume of 1fkgA against Monte Carlo", "[surfac
   const molecule::AtomBalls b = molecule::atom_balls(atoms, 1.4);
   std::vector<double> radii;
   for (double w : b.weights) radii.push_back(std::sqrt(w));
-  const Union sas(b);
-  const double volume = sas.balls.volume() - alpha::ErodedUnion(sas.balls, 1.4).layer().volume;
+  const testing::BallUnion sas = union_of(b);
+  const double volume = sas.u->volume() - alpha::ErodedUnion(*sas.u, 1.4).layer().volume;
   const auto [mc, sigma] = testing::DepthOracle(b.points, radii, 1.4).volume_deeper(1.4, 400000, 11);
   INFO("volume " << volume << " Monte Carlo " << mc << " +- " << sigma);
   CHECK(std::fabs(volume - mc) <= 4.5 * sigma);  // sigma: 0.3 % of the volume
