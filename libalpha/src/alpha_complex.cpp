@@ -169,13 +169,6 @@ void AlphaComplex::rank_critical() {
     const auto bits = std::bit_cast<std::uint64_t>(low(c) + 0.0);  // + 0.0: -0 sorts as 0
     return bits ^ (bits >> 63 ? ~std::uint64_t(0) : std::uint64_t(1) << 63);
   });
-  std::uint64_t filtered_compares = 0;
-  auto less = [&](const Critical& a, const Critical& b) {
-    const Size sa{a.value, a.error}, sb{b.value, b.error};
-    const int f = compare_filtered(sa, sb);  // decides almost always
-    if (f != kUndecided) return ++filtered_compares, f < 0;
-    return sizes.compare(local(simplex(a.id)), sa, local(simplex(b.id)), sb) < 0;
-  };
   // Entry ranks of the critical simplices (faces: their own size's rank).
   assign_huge(ranks_.vertex, t.num_points(), kNever);
   assign_huge(ranks_.edge, s.num_edges(), kNever);
@@ -187,10 +180,10 @@ void AlphaComplex::rank_critical() {
     else if (g < ids_.cells) ranks_.triangle[g - ids_.triangles] = rank;
     else ranks_.cell[g - ids_.cells] = rank;
   };
-  // A long run (equal values of symmetric copies, lattices) is sorted on
-  // each member's exact size computed once: k exact evaluations instead of
-  // O(k log k) exact comparisons. Same order: a stable sort by exact value.
-  constexpr std::size_t kLongRun = 3;
+  // A run (equal values of symmetric copies, lattices; near ties) is
+  // sorted on each member's exact size computed once: k exact evaluations
+  // instead of O(k log k) exact comparisons, each evaluating two. Same
+  // order: a stable sort by exact value.
   StageCounts run_compares;
   std::vector<ExactSize> exact;
   std::vector<std::size_t> by_value;
@@ -200,7 +193,7 @@ void AlphaComplex::rank_critical() {
     ++(c != 0 ? run_compares.exact : run_compares.perturbed);
     return c;
   };
-  auto sort_long_run = [&](std::size_t b, std::size_t e) {
+  auto sort_run = [&](std::size_t b, std::size_t e) {
     // One value throughout (a grid's runs): already in order, one rank,
     // and no fraction kept.
     const ExactSize first = exact_size(b);
@@ -230,15 +223,11 @@ void AlphaComplex::rank_critical() {
     std::size_t e = b + 1;
     double reach = high(order[b]);
     while (e < order.size() && low(order[e]) <= reach) reach = std::max(reach, high(order[e])), ++e;
-    if (e - b >= kLongRun) {
-      sort_long_run(b, e);
-      b = e;
-      continue;
-    }
-    if (e - b > 1) std::stable_sort(order.begin() + b, order.begin() + e, less);
-    for (std::size_t k = b; k < e; ++k) {
-      if (k == b || less(order[k - 1], order[k])) spectrum_.push_back(order[k].id);
-      set_rank(order[k].id, Index(spectrum_.size() - 1));
+    if (e - b > 1) {
+      sort_run(b, e);
+    } else {
+      spectrum_.push_back(order[b].id);
+      set_rank(order[b].id, Index(spectrum_.size() - 1));
     }
     b = e;
   }
@@ -246,7 +235,6 @@ void AlphaComplex::rank_critical() {
   spectrum_.shrink_to_fit();
 
   size_stats_ = sizes.stats();
-  size_stats_.compare.filtered += filtered_compares;
   size_stats_.compare += run_compares;
 }
 
