@@ -106,12 +106,12 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
               cavities.sa_area, cavities.sa_volume);
   std::printf("%s; written to %s/\n", cavity_counts(cavities).c_str(), outdir.c_str());
   if (!sites.empty()) {
-    std::printf("\nsite  cavity       score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
-    const std::size_t prefix = 67;  // columns before the residues
+    std::printf("\nsite  cavity         score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
+    const std::size_t prefix = 69;  // columns before the residues
     for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
       const molecule::Site& s = sites[i];
       const molecule::Cavity& c = cavities.cavity(s);
-      std::printf("%4zu  %-10s %7.3f %11.1f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(),
+      std::printf("%4zu  %-10s %9.3g %11.1f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(),
                   c.score, c.sa_volume, c.ms_volume, c.depth, c.mouths.size(),
                   residue_list(structure.atoms, c.lining_atoms, kSummaryWidth - prefix).c_str());
     }

@@ -46,7 +46,7 @@ int run(const std::string& file, const std::string& outdir) {
     const molecule::Cavity& c = cavities.cavity(cavities.sites[i]);
     const auto residues = molecule::residues_of(structure.atoms, c.lining_atoms);
     std::printf(
-        "site %zu (%s): score %.2f, volume %.0f A^3 (SA) / %.0f A^3 (molecular surface), %zu mouth(s), depth %.1f A, "
+        "site %zu (%s): score %.3g, volume %.0f A^3 (SA) / %.0f A^3 (molecular surface), %zu mouth(s), depth %.1f A, "
         "%zu lining residues, first %s\n",
         i + 1, molecule::site_cavity_name(cavities.sites[i]).c_str(), c.score, c.sa_volume, c.ms_volume, c.mouths.size(),
         c.depth, residues.size(), molecule::residue_id(structure.atoms[residues[0]]).c_str());

@@ -131,6 +131,8 @@ void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavit
     CHECK(p["mouths_to_outside"].get<std::size_t>() <= p["mouths"].get<std::size_t>());
     for (const char* key : {"max_alpha_sq", "close_alpha_sq", "fill_alpha_sq"}) check_number(p, key, false);
     if (i > 0) CHECK(p["score"].get<double>() <= list[i - 1]["score"].get<double>());
+    // 4 significant digits however small (a small molecule's scores are ~1e-6).
+    CHECK(p["score"].get<double>() == Approx(cavities[i].score).epsilon(5e-4));
     CHECK(p["tetrahedra"] == cavities[i].cells.size());
     CHECK(p["fill_alpha_sq"].get<double>() > 0);  // empty at alpha_sq = 0
     CHECK(p["max_probe_radius"].get<double>() == Approx(cavities[i].max_probe_radius).margin(5e-4));

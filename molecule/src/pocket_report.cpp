@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <tuple>
 
 #include "alpha/error.hpp"
@@ -18,7 +19,13 @@ double rounded(double x, double scale) {
   return r == 0 ? 0.0 : r;  // no -0 in the output
 }
 double length(double x) { return rounded(x, 1e3); }  // also areas and volumes
-double score(double x) { return rounded(x, 1e4); }
+// Scores span many decades (burial enters to the 12th power): 4
+// significant digits, so that small molecules' scores do not all read 0.
+double score(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return std::strtod(text, nullptr) + 0.0;  // + 0.0: no -0
+}
 
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
