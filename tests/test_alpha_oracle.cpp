@@ -81,6 +81,21 @@ std::vector<Input> generic_inputs() {
   // for unit spacing hide some points.
   in.push_back({"grid 5^3, random weights in [0, 1.5)", testing::grid_points(5), testing::random_weights(125, 77, 0.0, 1.5),
                 true});
+  // A weighted random set and its copy turned by 90 degrees about z,
+  // (x, y, z) -> (-y, x, z), exact in doubles: every size of the copy ties
+  // exactly with the original's, with full-precision coordinates (GMP, not
+  // 128-bit), as in a symmetric assembly. Still generic: a sphere through
+  // five points is not forced by the symmetry.
+  {
+    Input twin{"weighted random 300 and its copy turned 90 degrees", testing::random_points(300, 78, std::cbrt(300.0)),
+               testing::random_weights(300, 79, 0.0, 1.0), true};
+    for (std::size_t i = 0; i < 300; ++i) {
+      const Vec3 p = twin.points[i];
+      twin.points.push_back({-p.y, p.x, p.z});
+      twin.weights.push_back(twin.weights[i]);
+    }
+    in.push_back(std::move(twin));
+  }
   return in;
 }
 
