@@ -147,6 +147,12 @@ void check_invariants(const Balls& b, const Cavities& cav) {
       clearance = std::min(clearance, std::sqrt(alpha::dot(z - b.points[i], z - b.points[i])) - b.radii[i]);
     CHECK(c.max_probe_radius == Approx(clearance).epsilon(1e-12));
     CHECK(c.max_probe_radius > b.probe);  // empty at alpha_sq = 0: the probe fits
+    // Burial: the atoms near the centre, counted over all (the tests search
+    // with the default burial radius).
+    const double burial_sq = std::pow(molecule::CavityOptions{}.burial_radius, 2);
+    CHECK(c.burial_atoms == std::size_t(std::count_if(b.points.begin(), b.points.end(), [&](const Vec3& x) {
+            return alpha::dot(x - c.center, x - c.center) <= burial_sq;
+          })));
     CHECK(c.close_alpha_sq <= c.fill_alpha_sq);
     // Cut off from the outside from close_alpha_sq on, not just below it.
     // The ranks whose value rounds to close_alpha_sq (level() compares

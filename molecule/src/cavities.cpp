@@ -13,6 +13,7 @@
 #include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
 #include "alpha/persistent_basins.hpp"
+#include "alpha/point_grid.hpp"
 #include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
 
@@ -142,7 +143,12 @@ public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
-        cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)) {}
+        cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)),
+        atoms_(std::max(options.burial_radius, 1.0)),
+        max_radius_(radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end())) {
+    for (Index i = 0; i < t_.num_points(); ++i) atoms_.add(t_.point(i), i);
+    atoms_.finish();
+  }
 
   Index level() const { return level_; }
 
@@ -193,16 +199,24 @@ private:
   alpha::ErodedUnion excluded_;  // the solvent-excluded body: the SA union eroded by the probe
   std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
   std::vector<Index> sealed_from_;   // cell -> see sealed_from()
+  // All atoms, bucketed: the burial count and the clearance look only near
+  // the cavity (a scan of all atoms per cavity is slow on large assemblies).
+  alpha::PointGrid atoms_;
+  double max_radius_;
 
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
 
   // Radius of the largest probe centred at x: its distance to the nearest
   // atom's van der Waals sphere.
+  // The atoms in a cube of half-side h about x, doubling h until the
+  // nearest sphere found is nearer than any atom beyond the cube can be
+  // (farther than h from x, so beyond h - max_radius_).
   double clearance(const Vec3& x) const {
     double r = std::numeric_limits<double>::infinity();
-    for (Index i = 0; i < t_.num_points(); ++i)
-      r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]);
-    return r;
+    for (double h = options_.probe + 2 * max_radius_;; h *= 2) {
+      atoms_.visit(x, h, [&](Index i) { r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]); });
+      if (r < (h - max_radius_) * (1 - 1e-9)) return r;
+    }
   }
 
   // The empty space of a region's cells (sorted), each computed once for
@@ -306,9 +320,9 @@ private:
     }
 
     const double r2 = options_.burial_radius * options_.burial_radius;
-    for (const Vec3& x : t_.points()) {
-      cav.burial_atoms += dot(x - cav.center, x - cav.center) <= r2;
-    }
+    atoms_.visit(cav.center, options_.burial_radius, [&](Index i) {
+      cav.burial_atoms += dot(t_.point(i) - cav.center, t_.point(i) - cav.center) <= r2;
+    });
     return cav;
   }
 };
