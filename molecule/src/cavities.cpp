@@ -210,12 +210,14 @@ private:
   // atom's van der Waals sphere.
   // The atoms in a cube of half-side h about x, doubling h until the
   // nearest sphere found is nearer than any atom beyond the cube can be
-  // (farther than h from x, so beyond h - max_radius_).
+  // (farther than h from x, so beyond h - max_radius_), or all are seen.
+  // Infinite for a point at infinity (the orthocentre of a flat cell).
   double clearance(const Vec3& x) const {
     double r = std::numeric_limits<double>::infinity();
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return r;
     for (double h = options_.probe + 2 * max_radius_;; h *= 2) {
       atoms_.visit(x, h, [&](Index i) { r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]); });
-      if (r < (h - max_radius_) * (1 - 1e-9)) return r;
+      if (r < (h - max_radius_) * (1 - 1e-9) || atoms_.covers_all(x, h)) return r;
     }
   }
 

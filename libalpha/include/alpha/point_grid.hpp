@@ -18,15 +18,28 @@ public:
 
   void add(const Vec3& p, Index id) { entries_.emplace_back(key(p), id); }
   // Call once after the last add, before any query.
-  void finish() { std::sort(entries_.begin(), entries_.end()); }
+  void finish() {
+    std::sort(entries_.begin(), entries_.end());
+    for (const auto& e : entries_)
+      for (int a = 0; a < 3; ++a) low_[a] = std::min(low_[a], e.first[a]), high_[a] = std::max(high_[a], e.first[a]);
+  }
 
   // Calls f(id) for every point in the grid cells that meet the cube of
   // half-side `radius` about `center`: a superset of the points within
-  // `radius`, in a fixed order.
+  // `radius`, in key order. A cube of more cells than there are points
+  // (huge, or over sparse points) is answered by a scan of the points, so
+  // no query costs more than that; a NaN visits nothing.
   template <class F>
   void visit(const Vec3& center, double radius, F f) const {
-    const Key lo = key({center.x - radius, center.y - radius, center.z - radius});
-    const Key hi = key({center.x + radius, center.y + radius, center.z + radius});
+    Key lo, hi;
+    if (!range(center, radius, lo, hi)) return;
+    double cells = 1;
+    for (int a = 0; a < 3; ++a) cells *= double(hi[a]) - double(lo[a]) + 1;  // in doubles: no overflow
+    if (cells > double(entries_.size())) {
+      for (const auto& [k, id] : entries_)
+        if (lo[0] <= k[0] && k[0] <= hi[0] && lo[1] <= k[1] && k[1] <= hi[1] && lo[2] <= k[2] && k[2] <= hi[2]) f(id);
+      return;
+    }
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
@@ -36,14 +49,37 @@ public:
         }
   }
 
+  // Whether visit(center, radius) reaches every point.
+  bool covers_all(const Vec3& center, double radius) const {
+    Key lo, hi;
+    return entries_.empty() || (range(center, radius, lo, hi) && lo == low_ && hi == high_);
+  }
+
 private:
   using Key = std::array<std::int64_t, 3>;
-  Key key(const Vec3& p) const {
-    return {std::int64_t(std::floor(p.x / spacing_)), std::int64_t(std::floor(p.y / spacing_)),
-            std::int64_t(std::floor(p.z / spacing_))};
+  static constexpr std::int64_t kFar = std::int64_t(1) << 62;
+
+  // The occupied cells meeting the cube, per axis; false if none.
+  bool range(const Vec3& c, double r, Key& lo, Key& hi) const {
+    const double center[3] = {c.x, c.y, c.z};
+    for (int a = 0; a < 3; ++a) {
+      const double l = (center[a] - r) / spacing_, h = (center[a] + r) / spacing_;
+      if (std::isnan(l) || std::isnan(h)) return false;
+      lo[a] = std::max(low_[a], cell(l));
+      hi[a] = std::min(high_[a], cell(h));
+      if (lo[a] > hi[a]) return false;
+    }
+    return true;
   }
+  // floor(v), saturated: the cast of a far or infinite value is undefined.
+  static std::int64_t cell(double v) {
+    const double f = std::floor(v);
+    return f <= -double(kFar) ? -kFar : f >= double(kFar) ? kFar : std::int64_t(f);
+  }
+  Key key(const Vec3& p) const { return {cell(p.x / spacing_), cell(p.y / spacing_), cell(p.z / spacing_)}; }
   double spacing_;
   std::vector<std::pair<Key, Index>> entries_;
+  Key low_{kFar, kFar, kFar}, high_{-kFar, -kFar, -kFar};  // occupied cells' range
 };
 
 }  // namespace alpha

@@ -1,0 +1,91 @@
+// alpha::PointGrid against brute force: every point within the radius is
+// visited, nothing outside the cube's cells is, each once; far, infinite
+// and NaN queries and far-apart points neither misbehave nor walk the
+// empty cells between them.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "alpha/point_grid.hpp"
+#include "point_sets.hpp"
+
+using alpha::Index;
+using alpha::Vec3;
+
+namespace {
+
+std::vector<Index> visited(const alpha::PointGrid& g, const Vec3& c, double r) {
+  std::vector<Index> ids;
+  g.visit(c, r, [&](Index i) { ids.push_back(i); });
+  return ids;
+}
+
+}  // namespace
+
+TEST_CASE("PointGrid visits a superset of the points within the radius, each once", "[point_grid]") {
+  // Random points, a grid (points on cell borders), duplicates and two far
+  // outliers (keys saturate).
+  std::vector<Vec3> pts = testing::random_points(500, 31, 20.0);
+  for (const Vec3& p : testing::grid_points(4, 2.5)) pts.push_back(p);
+  pts.push_back(pts[3]);
+  pts.push_back({1e200, -3, 4});
+  pts.push_back({-1e300, 1e300, 0});
+  const double spacing = 2.5;
+  alpha::PointGrid g(spacing);
+  for (Index i = 0; i < Index(pts.size()); ++i) g.add(pts[i], i);
+  g.finish();
+
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> coord(-5, 25);
+  std::vector<std::pair<Vec3, double>> queries;
+  for (int k = 0; k < 200; ++k) queries.push_back({{coord(rng), coord(rng), coord(rng)}, std::fabs(coord(rng)) / 3});
+  queries.push_back({pts[7], 0.0});                // radius 0 at a point
+  queries.push_back({{5, 5, 5}, 1e6});             // more cells than points: scanned
+  queries.push_back({{1e200, -3, 4}, 1.0});        // at the far outlier
+  queries.push_back({{0, 0, 0}, std::numeric_limits<double>::infinity()});
+  for (const auto& [c, r] : queries) {
+    INFO("centre " << c.x << " " << c.y << " " << c.z << ", radius " << r);
+    std::vector<Index> ids = visited(g, c, r);
+    std::vector<Index> sorted = ids;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());  // each once
+    for (Index i = 0; i < Index(pts.size()); ++i) {
+      const Vec3 d = pts[i] - c;
+      const bool in_cube = std::fabs(d.x) <= r && std::fabs(d.y) <= r && std::fabs(d.z) <= r;
+      if (in_cube) CHECK(std::binary_search(sorted.begin(), sorted.end(), i));
+    }
+    // Nothing beyond the cells that meet the cube (one cell of slack).
+    for (Index i : ids) {
+      const Vec3 d = pts[i] - c;
+      CHECK(std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)}) <= r + 2 * spacing);
+    }
+  }
+  CHECK(g.covers_all({0, 0, 0}, std::numeric_limits<double>::infinity()));
+  CHECK(visited(g, {0, 0, 0}, std::numeric_limits<double>::infinity()).size() == pts.size());
+  CHECK_FALSE(g.covers_all({5, 5, 5}, 100.0));  // the outliers lie beyond
+}
+
+TEST_CASE("PointGrid: NaN, infinite and far queries; sparse points far apart", "[point_grid]") {
+  alpha::PointGrid g(1.0);
+  g.add({0, 0, 0}, 0);
+  g.add({1e6, 1e6, 1e6}, 1);  // 10^18 empty cells between the two
+  g.finish();
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  CHECK(visited(g, {nan, 0, 0}, 1.0).empty());
+  CHECK(visited(g, {0, 0, 0}, nan).empty());
+  CHECK(visited(g, {inf, 0, 0}, 1.0).empty());
+  CHECK(visited(g, {1e300, 1e300, 1e300}, 1.0).empty());
+  CHECK(visited(g, {0.5, 0.5, 0.5}, 1.0) == std::vector<Index>{0});
+  // A cube over both: answered by a scan, at once (walking its cells would not end).
+  CHECK(visited(g, {5e5, 5e5, 5e5}, 1e6) == std::vector<Index>{0, 1});
+  CHECK(g.covers_all({5e5, 5e5, 5e5}, 1e6));
+  CHECK_FALSE(g.covers_all({0, 0, 0}, 10.0));
+  alpha::PointGrid empty(1.0);
+  empty.finish();
+  CHECK(visited(empty, {0, 0, 0}, 1.0).empty());
+  CHECK(empty.covers_all({0, 0, 0}, 1.0));
+}
