@@ -243,6 +243,20 @@ bool same(const Cavity& a, const Cavity& b) {
 
 }  // namespace
 
+TEST_CASE("Cavities: the widest probe far from every atom, and with zero radii and probe", "[cavities]") {
+  // A shell of radius 40 A: the void's widest probe (38 A) lies beyond
+  // the first few cubes the clearance searches (radii 2 A: closed).
+  const Balls shell(fibonacci_sphere(3000, 40), std::vector<double>(3000, 2.0), 0.3);
+  const Cavities cav = shell.cavities();
+  check_invariants(shell, cav);  // clearance against every atom
+  REQUIRE(cav.voids.size() == 1);
+  CHECK(cav.voids.front().max_probe_radius == Approx(40 - 2.0).epsilon(1e-9));
+  // Points (radius 0) and no probe: the search must still grow.
+  const auto pts = testing::random_points(300, 41, 100.0);
+  const Balls bare(pts, std::vector<double>(pts.size(), 0.0), 0.0);
+  check_invariants(bare, bare.cavities());
+}
+
 TEST_CASE("Cavities: a hollow shell of balls holds exactly one void", "[cavities]") {
   const double R = 8, r = 1.2, probe = 0.3, rho = r + probe;
   const Balls b(fibonacci_sphere(400, R), std::vector<double>(400, r), probe);

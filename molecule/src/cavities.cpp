@@ -215,7 +215,7 @@ private:
   double clearance(const Vec3& x) const {
     double r = std::numeric_limits<double>::infinity();
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return r;
-    for (double h = options_.probe + 2 * max_radius_;; h *= 2) {
+    for (double h = std::max(options_.probe + 2 * max_radius_, 1.0);; h *= 2) {  // > 0: zero radii and probe
       atoms_.visit(x, h, [&](Index i) { r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]); });
       if (r < (h - max_radius_) * (1 - 1e-9) || atoms_.covers_all(x, h)) return r;
     }

@@ -28,7 +28,8 @@ public:
   // half-side `radius` about `center`: a superset of the points within
   // `radius`, in key order. A cube of more cells than there are points
   // (huge, or over sparse points) is answered by a scan of the points, so
-  // no query costs more than that; a NaN visits nothing.
+  // no query walks more cells than there are points; a NaN visits nothing.
+  // Points must not be NaN.
   template <class F>
   void visit(const Vec3& center, double radius, F f) const {
     Key lo, hi;
