@@ -29,7 +29,7 @@ public:
   // `radius`, in key order. A cube of more cells than there are points
   // (huge, or over sparse points) is answered by a scan of the points, so
   // no query walks more cells than there are points; a NaN visits nothing.
-  // Points must not be NaN.
+  // (A NaN point is kept in an extreme cell: defined, not meaningful.)
   template <class F>
   void visit(const Vec3& center, double radius, F f) const {
     Key lo, hi;
@@ -75,7 +75,7 @@ private:
   // floor(v), saturated: the cast of a far or infinite value is undefined.
   static std::int64_t cell(double v) {
     const double f = std::floor(v);
-    return f <= -double(kFar) ? -kFar : f >= double(kFar) ? kFar : std::int64_t(f);
+    return f >= double(kFar) ? kFar : f > -double(kFar) ? std::int64_t(f) : -kFar;  // NaN: -kFar, defined
   }
   Key key(const Vec3& p) const { return {cell(p.x / spacing_), cell(p.y / spacing_), cell(p.z / spacing_)}; }
   double spacing_;
