@@ -207,11 +207,11 @@ private:
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
 
   // Radius of the largest probe centred at x: its distance to the nearest
-  // atom's van der Waals sphere.
-  // The atoms in a cube of half-side h about x, doubling h until the
-  // nearest sphere found is nearer than any atom beyond the cube can be
-  // (farther than h from x, so beyond h - max_radius_), or all are seen.
-  // Infinite for a point at infinity (the orthocentre of a flat cell).
+  // atom's van der Waals sphere; infinite for a point at infinity (the
+  // orthocentre of a flat cell). Searched in a cube of half-side h about
+  // x, doubling h until the nearest sphere found is nearer than any atom
+  // beyond the cube can be (farther than h from x, so beyond
+  // h - max_radius_), or all atoms are seen.
   double clearance(const Vec3& x) const {
     double r = std::numeric_limits<double>::infinity();
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return r;

@@ -4,8 +4,9 @@
 //
 // Lengths in A, areas in A^2, volumes in A^3, rounded to 3 decimals (1e-3 A
 // is far below the precision of any structure); scores and buriedness to
-// 4 significant digits; values named *_alpha_sq are squared radii, kept at full precision (they
-// are critical values of the spectrum one may pass back to --alpha-sq).
+// 4 significant digits; values named *_alpha_sq are squared radii, kept at
+// full precision (they are critical values of the spectrum one may pass
+// back to --alpha-sq).
 #pragma once
 #include <string>
 #include <vector>
