@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -515,7 +516,8 @@ TEST_CASE("structure: PDB coordinates must be numbers", "[structure]") {
   }
   // A record cut inside the z field (gemmi takes "\r\n" for its last columns).
   const std::string cut = with_third([](std::string& line) { line.resize(53); }, "\r\n");
-  CHECK(parse_error(cut, "x.pdb") == "x.pdb: line 3: ATOM record shorter than 54 columns");
+  CHECK(parse_error(cut, "x.pdb") == "x.pdb: line 3: ATOM record shorter than 54 columns ('" +
+                                         cut.substr(cut.find("ATOM      3"), 53) + "')");
   // Records after END are not read, nor checked.
   CHECK(molecule::parse_structure(with_y("   1.000") + "END\n" + with_y("     abc"), "x.pdb").atoms.size() == 4);
 }
@@ -560,9 +562,7 @@ TEST_CASE("structure: bad files give one line naming the file", "[structure]") {
   // gemmi's messages, made one line, with the file (and line) in front.
   CHECK(error_of(bad + "/truncated.cif") == bad + "/truncated.cif:3:1: Wrong number of values in the loop");
   CHECK(error_of(bad + "/short_line.pdb") ==
-        bad +
-            "/short_line.pdb: Problem in line 2: The line is too short to be correct: "
-            "ATOM      1  N   ALA A   1      11.104   6.134");
+        bad + "/short_line.pdb: line 2: ATOM record shorter than 54 columns ('ATOM      1  N   ALA A   1      11.104   6.134')");
 
   // Other bad bytes, through parse_structure.
   CHECK(parse_error(std::string("\x7f"
@@ -610,4 +610,47 @@ TEST_CASE("structure: coordinates that are not numbers within 1e6 A name the ato
   CHECK(parse_error(with_x("-2e6"), "x.cif").rfind(atom, 0) == 0);
   CHECK(parse_error(with_x("?"), "x.cif").rfind(atom + "nan", 0) == 0);
   CHECK(molecule::parse_structure(with_x("999999.0"), "x.cif").atoms.front().position.x == 999999.0);
+}
+
+TEST_CASE("structure: old-format PDB columns 73-80 (id code and line number) are not read", "[structure]") {
+  // HOLE's gramicidin example: "1GRM 125" in columns 73-80 of every record
+  // (line numbers from 10 up fail gemmi as a charge "52"). Read as
+  // Biopython 1.80 reads it: 272 atoms, elements C 198, N 40, O 34.
+  const std::string text = file_text(data("1grm_single.pdb"));
+  const Structure s = molecule::parse_structure(text, "1grm.pdb", keep_all());
+  REQUIRE(s.atoms.size() == 272);
+  std::map<std::string, int> elements;
+  for (const Atom& a : s.atoms) ++elements[a.element];
+  CHECK(elements == std::map<std::string, int>{{"C", 198}, {"N", 40}, {"O", 34}});
+  CHECK(s.report.warnings == std::vector<std::string>{"columns 73-80 hold an old-format id code and line number "
+                                                      "(line 125: '1GRM 125'): ignored, elements taken from the "
+                                                      "atom names"});
+  // The same atoms as the file with those columns blanked.
+  std::string blanked;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) blanked += line.substr(0, 72) + "\n";
+  const Structure b = molecule::parse_structure(blanked, "1grm.pdb", keep_all());
+  check_same(s, b);
+  CHECK(b.report.warnings.empty());
+}
+
+TEST_CASE("structure: a PDB charge gemmi cannot read names the line and the text", "[structure]") {
+  const auto four = [](const std::string& charge) {
+    std::string pdb;
+    for (int i = 0; i < 4; ++i) {
+      std::string line = pdb_atom("ATOM", i + 1, "CA", ' ', "ALA", 'A', i + 1, 3.8 * i, 1, 0, 1, "C");
+      line.pop_back();
+      pdb += line + (i == 2 ? charge : "") + "\n";
+    }
+    return pdb;
+  };
+  for (const char* bad : {"1E", "E1", "12", "2*"}) {
+    INFO(bad);
+    CHECK(parse_error(four(bad), "x.pdb") ==
+          "x.pdb: line 3: bad charge in ATOM record (columns 79-80: '" + std::string(bad) + "')");
+  }
+  for (const char* good : {"2+", "+2", "1-", "  ", "1 ", "1", "+ "}) {
+    INFO(good);
+    CHECK(molecule::parse_structure(four(good), "x.pdb").atoms.size() == 4);
+  }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <charconv>
 #include <map>
+#include <optional>
 #include <span>
 #include <sstream>
 
@@ -97,10 +98,19 @@ bool is_pdb_number(std::string_view field) {
   return digits && field.find_first_not_of(' ', i) == std::string_view::npos;
 }
 
+// What gemmi reads as a charge from columns 79-80 ("2+", "+2", "2", blank);
+// it rejects other text without saying where.
+bool is_pdb_charge(char c79, char c80) {
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  const auto sign = [](char c) { return c == '+' || c == '-' || c == ' '; };
+  return !(digit(c79) && !sign(c80)) && !(digit(c80) && !sign(c79));
+}
+
 // gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
-// a word, so the records it reads are checked here: those starting with
-// ATOM or HETA in any case, up to an END record.
-void check_pdb_coordinates(std::string_view text, const std::string& name) {
+// a word, and rejects a bad charge without a line number, so the records it
+// reads are checked here first: those starting with ATOM or HETA in any
+// case, up to an END record. `old_columns`: columns 73-80 are not read.
+void check_pdb_records(std::string_view text, const std::string& name, bool old_columns) {
   std::size_t line_number = 0;
   for (std::size_t i = 0; i < text.size();) {
     std::size_t eol = text.find('\n', i);
@@ -118,11 +128,44 @@ void check_pdb_coordinates(std::string_view text, const std::string& name) {
     const auto error = [&](const std::string& what) {
       fail(name, "line " + std::to_string(line_number) + ": " + what);
     };
-    if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns");
+    if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
     if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
       error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
             std::string(line.substr(30, 24)) + "')");
+    if (!old_columns && line.size() >= 79 && !is_pdb_charge(line[78], line.size() >= 80 ? line[79] : ' '))
+      error("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
+            "')");
   }
+}
+
+// Columns 73-80 of the PDB format before 1996 (e.g. HOLE's gramicidin,
+// gemmi's pdb1gdr.ent): the id code and a line number ("1GRM 125"), where
+// the current format has the segment id, element and charge. Such a record
+// has a right-justified number of two digits or more in columns 77-80,
+// which no element and charge can be. The first one found, with its line
+// number, tells the file is in that format.
+struct OldColumns {
+  std::size_t line_number = 0;
+  std::string text;  // columns 73-80
+};
+
+std::optional<OldColumns> old_format_columns(std::string_view text) {
+  std::size_t line_number = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t eol = text.find('\n', i);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(i, eol - i);
+    i = eol + 1;
+    ++line_number;
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (line.size() < 80 || !(equals_ci(line.substr(0, 4), "atom") || equals_ci(line.substr(0, 4), "heta"))) continue;
+    const std::string_view tail = line.substr(76, 4);
+    const std::size_t first_digit = tail.find_first_not_of(' ');
+    if (first_digit > 2) continue;
+    if (std::all_of(tail.begin() + first_digit, tail.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return OldColumns{line_number, std::string(line.substr(72, 8))};
+  }
+  return std::nullopt;
 }
 
 std::string join(const std::vector<std::string>& items, std::size_t max_items) {
@@ -162,12 +205,16 @@ bool has_atoms(const gemmi::Structure& st) {
   return false;
 }
 
-gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name) {
+// `old_columns`: a PDB file whose columns 73-80 are not read.
+gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name, bool old_columns) {
+  if (format == Format::Pdb) check_pdb_records(text, name, old_columns);
   gemmi::Structure st;
   std::vector<std::string> missing;
   try {
     if (format == Format::Pdb) {
-      st = gemmi::read_pdb_from_memory(text.data(), text.size(), name);
+      gemmi::PdbReadOptions pdb_options;
+      if (old_columns) pdb_options.max_line_length = 72;
+      st = gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_options);
     } else {
       gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
       st = gemmi::make_structure(doc);
@@ -181,7 +228,6 @@ gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const st
   }
   if (!missing.empty()) fail(name, "mmCIF _atom_site lacks column(s) " + join(missing, missing.size()));
   if (!has_atoms(st)) fail(name, "no atoms in the file");
-  if (format == Format::Pdb) check_pdb_coordinates(text, name);
   return st;
 }
 
@@ -460,8 +506,14 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   }
   if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
   const Format format = detect_format(data, name);
-  const gemmi::Structure st = parse_with_gemmi(data, format, name);
+  const std::optional<OldColumns> old = format == Format::Pdb ? old_format_columns(data) : std::nullopt;
+  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value());
   Structure out = select(st, options, name);
+  if (old)
+    out.report.warnings.insert(out.report.warnings.begin(),
+                               "columns 73-80 hold an old-format id code and line number (line " +
+                                   std::to_string(old->line_number) + ": '" + old->text +
+                                   "'): ignored, elements taken from the atom names");
   out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
   out.report.gzipped = gzipped;
   return out;

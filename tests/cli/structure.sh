@@ -153,7 +153,14 @@ case $case_name in
     ;;
   short_line)
     run delaunay "$bad/short_line.pdb" --json
-    expect_error "$bad/short_line.pdb: Problem in line 2: The line is too short"
+    expect_error "$bad/short_line.pdb: line 2: ATOM record shorter than 54 columns ('ATOM      1  N   ALA A   1      11.104   6.134')"
+    ;;
+  old_format)
+    # Columns 73-80 "1GRM 125": read without them, with a warning.
+    run delaunay "$data/1grm_single.pdb" --keep-hetero --json
+    expect_points 272
+    grep -qF "1grm_single.pdb: columns 73-80 hold an old-format id code and line number (line 125: '1GRM 125')" \
+      "$tmp/err" || fail "no warning about the old format"
     ;;
   directory)
     mkdir "$tmp/dir.pdb"
