@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <regex>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -30,6 +29,8 @@
 #include "alpha/error.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/batch_inputs.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
@@ -48,8 +49,7 @@ namespace fs = std::filesystem;
 struct PocketsOptions {
   InputOptions input;  // FILE, --probe and the structure selection
   std::string output_dir;
-  double min_volume = molecule::CavityOptions{}.min_volume;
-  std::string mesh = "ply";
+  molecule::AnalysisOptions analysis;  // --min-volume, --mesh
   bool json = false;
 };
 
@@ -58,20 +58,7 @@ constexpr std::size_t kSummaryRows = 10;
 constexpr std::size_t kSummaryWidth = 100;
 
 // "1a26A.pdb" -> "1a26A_pockets"; "x.cif.gz" -> "x_pockets".
-std::string default_output_dir(const std::string& file) {
-  std::string name = fs::path(file).filename().string();
-  static const std::regex kStructureExtension(R"((\.(pdb|ent|cif|mmcif))?(\.gz)?$)", std::regex::icase);
-  name = std::regex_replace(name, kStructureExtension, "");
-  return (name.empty() ? std::string("structure") : name) + "_pockets";
-}
-
-// The structure file's path for the PyMOL script: absolute, so the script
-// runs from anywhere.
-std::string absolute_path(const std::string& file) {
-  std::error_code ec;
-  const fs::path p = fs::absolute(file, ec);
-  return ec ? file : p.lexically_normal().string();
-}
+std::string default_output_dir(const std::string& file) { return molecule::structure_id(file) + "_pockets"; }
 
 // "A:TYR:42 A:SER:43 ..." cut to fit `width` columns, with "(+N)" for the
 // residues left out.
@@ -135,42 +122,24 @@ int run_pockets(const PocketsOptions& opt) {
   // file is written, the directories created here are removed again.
   const std::string outdir = opt.output_dir.empty() ? default_output_dir(file) : opt.output_dir;
   molecule::PocketOutputDir out(outdir);
-  const molecule::Structure structure = read_structure_file(file, opt.input.structure);
 
-  molecule::CavityOptions options;  // the library's defaults but for these two
-  options.probe = opt.input.probe;
-  options.min_volume = opt.min_volume;
-  const molecule::PocketSearch search = [&] {
-    try {
-      return molecule::search_pockets(structure, options);
-    } catch (const alpha::Error& e) {
-      throw std::runtime_error(file + ": " + e.what());  // e.g. all atoms in one plane
-    }
-  }();
-  const molecule::Cavities& cavities = search.cavities;
-  spdlog::info("regular triangulation and alpha complex: {:.3f} s, {} atoms, {} finite cells", search.complex_seconds,
-               structure.atoms.size(), search.triangulation->num_finite_cells());
-  spdlog::info("cavities: {:.3f} s, {}", search.cavities_seconds, cavity_counts(cavities));
-
-  molecule::PocketRun run;
-  run.file = file;
-  run.structure = &structure;
-  run.options = options;
-  run.version = ALPHAPOCKET_VERSION;
-  run.search = &search;
-  run.mesh_format = opt.mesh;
+  molecule::AnalysisOptions options = opt.analysis;
+  options.structure = opt.input.structure;
+  options.cavities.probe = opt.input.probe;
+  options.version = ALPHAPOCKET_VERSION;
+  const molecule::Analysis analysis = molecule::analyse(file, options);
+  log_analysis(analysis);
 
   Stopwatch write_time;
-  const nlohmann::ordered_json report = molecule::pocket_report(run);
-  const std::vector<std::string> written = out.write(run, report, absolute_path(file));
+  const std::vector<std::string> written = molecule::write_outputs(analysis, out, absolute_path(file));
   for (const std::string& warning : out.warnings()) spdlog::warn("{}", warning);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 
   if (opt.json) {
-    std::puts(report.dump().c_str());
+    std::puts(analysis.report.dump().c_str());
   } else {
-    print_summary(opt, outdir, structure, cavities);
+    print_summary(opt, outdir, analysis.structure, analysis.search.cavities);
   }
   flush_stdout();
   return 0;
@@ -193,13 +162,7 @@ Subcommand add_pockets_command(CLI::App& app) {
   sub->add_option("-o,--output-dir", opt->output_dir,
                   "Directory for the results (created if missing; default: <name>_pockets in the current "
                   "directory)");
-  sub->add_option("--min-volume", opt->min_volume, "Drop pockets and voids whose SA volume (space the probe centre reaches) is below this, A^3")
-      ->capture_default_str()
-      ->check(finite_number())
-      ->check(CLI::NonNegativeNumber);
-  sub->add_option("--mesh", opt->mesh, "Format of the mesh files")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"ply", "obj", "off", "stl"}));
+  add_cavity_options(*sub, opt->analysis);
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   return {sub, [opt] { return run_pockets(*opt); }};
 }

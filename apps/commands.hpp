@@ -20,5 +20,7 @@ Subcommand add_persistence_command(CLI::App& app);
 Subcommand add_shape_command(CLI::App& app);
 Subcommand add_pockets_command(CLI::App& app);
 Subcommand add_surface_command(CLI::App& app);
+Subcommand add_batch_command(CLI::App& app);
+Subcommand add_merge_command(CLI::App& app);
 
 }  // namespace alphapocket

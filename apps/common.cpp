@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -64,7 +65,23 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
                    "Keep hetero groups: ligands, ions (dropped by default; modified residues of a polymer are "
                    "always kept)")
           ->group(group),
+      sub.add_option("--min-plddt", selection.min_plddt,
+                     "Predicted models (AlphaFold): leave out residues with a lower pLDDT, 0-100 (default: keep all)")
+          ->check(finite_number())
+          ->check(CLI::Range(0.0, 100.0))
+          ->group(group),
   };
+}
+
+void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
+  sub.add_option("--min-volume", options.cavities.min_volume,
+                 "Drop pockets and voids whose SA volume (space the probe centre reaches) is below this, A^3")
+      ->capture_default_str()
+      ->check(finite_number())
+      ->check(CLI::NonNegativeNumber);
+  sub.add_option("--mesh", options.mesh_format, "Format of the mesh files")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ply", "obj", "off", "stl"}));
 }
 
 CLI::Validator finite_number() {
@@ -86,6 +103,16 @@ molecule::Structure read_structure_file(const std::string& file, const molecule:
   spdlog::info("{}: {}", file, molecule::summary(structure.report));
   for (const std::string& warning : structure.report.warnings) spdlog::warn("{}: {}", file, warning);
   return structure;
+}
+
+void log_analysis(const molecule::Analysis& a, spdlog::level::level_enum level) {
+  const molecule::Cavities& c = a.search.cavities;
+  spdlog::log(level, "{}: {}", a.file, molecule::summary(a.structure.report));
+  for (const std::string& warning : a.structure.report.warnings) spdlog::warn("{}: {}", a.file, warning);
+  spdlog::log(level, "regular triangulation and alpha complex: {:.3f} s, {} atoms, {} finite cells",
+              a.search.complex_seconds, a.structure.atoms.size(), a.search.triangulation->num_finite_cells());
+  spdlog::log(level, "cavities: {:.3f} s, {} pockets, {} voids, {} tunnels", a.search.cavities_seconds,
+              c.pockets.size(), c.voids.size(), c.tunnels.size());
 }
 
 PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms) {
@@ -131,6 +158,12 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
   // Not the persistence pairs: they are computed when a command needs them.
   spdlog::info("alpha complex: {:.3f} s, {} critical values", complex_time.seconds(), in.complex->spectrum_size());
   return in;
+}
+
+std::string absolute_path(const std::string& file) {
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::absolute(file, ec);
+  return ec ? file : p.lexically_normal().string();
 }
 
 void flush_stdout() {

@@ -9,9 +9,11 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/triangulation.hpp"
+#include "molecule/analysis.hpp"
 #include "molecule/structure.hpp"
 #include "point_file.hpp"
 
@@ -42,9 +44,17 @@ void add_input_options(CLI::App& sub, InputOptions& opt);
 std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::StructureOptions& selection,
                                                       double& probe);
 
+// Adds the options of the cavity search and its outputs that `pockets` and
+// `batch` share: --min-volume, --mesh.
+void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options);
+
 // A structure file read through the molecule layer; logs (info) what was
 // kept and dropped, and its warnings.
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options);
+
+// Logs what analyse() read, kept and dropped, its warnings and the stages'
+// timings (at `level`; warnings always as warnings).
+void log_analysis(const molecule::Analysis& analysis, spdlog::level::level_enum level = spdlog::level::info);
 
 // Alpha values on the command line: squared radii, finite (the validator
 // rejects inf and nan), and the convention of which simplices are present.
@@ -81,6 +91,10 @@ public:
 private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+// A structure file's path for the PyMOL script: absolute, so that the
+// script runs from anywhere.
+std::string absolute_path(const std::string& file);
 
 // Flushes stdout; throws when the results could not be written.
 void flush_stdout();

@@ -34,6 +34,8 @@ int run(int argc, char** argv) {
   commands.push_back(alphapocket::add_shape_command(app));
   commands.push_back(alphapocket::add_pockets_command(app));
   commands.push_back(alphapocket::add_surface_command(app));
+  commands.push_back(alphapocket::add_batch_command(app));
+  commands.push_back(alphapocket::add_merge_command(app));
 
   try {
     app.parse(argc, argv);

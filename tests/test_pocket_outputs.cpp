@@ -262,11 +262,12 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
   REQUIRE(lines.size() == 1 + r.search.cavities.pockets.size());
   CHECK(lines[0] ==
         "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
-        "lining_residues,residues");
+        "lining_residues,residues,mean_plddt");
   for (std::size_t i = 1; i < lines.size(); ++i) {
     INFO(lines[i]);
     const std::vector<std::string> f = split(lines[i], ',');
-    REQUIRE(f.size() == 14);
+    REQUIRE(f.size() == 15);
+    CHECK(f[14].empty());  // an experimental structure: no pLDDT
     const json& p = r.report["pockets"][i - 1];
     CHECK(std::stoul(f[0]) == i);
     CHECK(std::stod(f[1]) == p["score"].get<double>());
@@ -517,7 +518,7 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
   run.search = &search;
   const std::vector<std::string> lines = lines_of(molecule::pockets_csv(run));
   REQUIRE(lines.size() == 2);
-  CHECK(lines[1].substr(lines[1].rfind(",3,")) == ",3,\"A:TYR:42 A:GLY:42B x,y:SER:-3\"");
+  CHECK(lines[1].substr(lines[1].rfind(",3,")) == ",3,\"A:TYR:42 A:GLY:42B x,y:SER:-3\",");
 
   const auto report = molecule::pocket_report(run);
   const auto& residues = report["pockets"][0]["lining_residues"];

@@ -16,14 +16,36 @@ namespace molecule {
 
 namespace fs = std::filesystem;
 
-PocketOutputDir::PocketOutputDir(const std::string& path) : path_(path) {
+OutputSelection parse_output_selection(const std::string& list) {
+  OutputSelection s{false, false, false, false, false};
+  std::size_t begin = 0;
+  while (begin <= list.size()) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    const std::string item = list.substr(begin, end - begin);
+    bool* flag = item == "report" ? &s.report
+                 : item == "csv"  ? &s.csv
+                 : item == "pml"  ? &s.pml
+                 : item == "pdb"  ? &s.pdb
+                 : item == "meshes" ? &s.meshes
+                                    : nullptr;
+    if (!flag) alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes)");
+    *flag = true;
+    begin = end + 1;
+  }
+  return s;
+}
+
+PocketOutputDir::PocketOutputDir(const std::string& path, const OutputSelection& selection)
+    : path_(path), selection_(selection) {
   std::error_code ec;
   if (fs::exists(path_, ec) && !fs::is_directory(path_, ec))
     alpha::fail(path + ": cannot create the output directory: a file of that name exists");
   create(path_);
-  create(path_ / "meshes");
   check_can_create((path_ / "report.json").string());
-  check_can_create((path_ / "meshes" / "molecule.ply").string());
+  if (selection_.meshes) {
+    create(path_ / "meshes");
+    check_can_create((path_ / "meshes" / "molecule.ply").string());
+  }
 }
 
 PocketOutputDir::~PocketOutputDir() {
@@ -53,17 +75,19 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   // refuses, a full disk) leaves the directory as it was.
   std::vector<std::pair<std::string, std::string>> files;  // (name, content)
   warnings_.clear();
-  files.emplace_back("report.json", report.dump(2) + "\n");
-  files.emplace_back("pockets.csv", pockets_csv(run));
-  files.emplace_back("pockets.pml", pymol_script(run, structure_path));
+  if (selection_.report) files.emplace_back("report.json", report.dump(2) + "\n");
+  if (selection_.csv) files.emplace_back("pockets.csv", pockets_csv(run));
+  if (selection_.pml) files.emplace_back("pockets.pml", pymol_script(run, structure_path));
   const alpha::AlphaComplex& ac = *run.search->complex;
   const Cavities& cavities = run.search->cavities;
-  PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file);
-  if (pdb.left_out > 0)
-    warnings_.push_back("pockets.pdb: " + std::to_string(pdb.left_out) +
-                        " pseudo-atoms left out, beyond the PDB columns' range (report.json has every cavity)");
-  files.emplace_back("pockets.pdb", std::move(pdb.text));
-  if (!run.mesh_format.empty()) {
+  if (selection_.pdb) {
+    PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file);
+    if (pdb.left_out > 0)
+      warnings_.push_back("pockets.pdb: " + std::to_string(pdb.left_out) +
+                          " pseudo-atoms left out, beyond the PDB columns' range (report.json has every cavity)");
+    files.emplace_back("pockets.pdb", std::move(pdb.text));
+  }
+  if (selection_.meshes && !run.mesh_format.empty()) {
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
       files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh).bytes);
     };
@@ -84,20 +108,28 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   }
   write_files_atomically(files);
   written_ = true;
-  remove_stale_meshes(written);
+  remove_stale(written);
   return written;
 }
 
-void PocketOutputDir::remove_stale_meshes(const std::vector<std::string>& written) const {
+void PocketOutputDir::remove_stale(const std::vector<std::string>& written) const {
+  const auto is_written = [&](const std::string& name) {
+    return std::find(written.begin(), written.end(), name) != written.end();
+  };
+  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.pdb"}) {
+    std::error_code rm;
+    if (!is_written(name)) fs::remove(path_ / name, rm);
+  }
   static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(path_ / "meshes", ec)) {
     const std::string name = entry.path().filename().string();
     if (!std::regex_match(name, kOurs)) continue;
-    if (std::find(written.begin(), written.end(), "meshes/" + name) != written.end()) continue;
+    if (is_written("meshes/" + name)) continue;
     std::error_code rm;
     fs::remove(entry.path(), rm);
   }
+  if (!selection_.meshes) fs::remove(path_ / "meshes", ec);  // only when empty
 }
 
 }  // namespace molecule

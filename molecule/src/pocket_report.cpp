@@ -27,6 +27,12 @@ double score(double x) {
   return std::strtod(text, nullptr) + 0.0;  // + 0.0: no -0
 }
 
+std::vector<alpha::Index> all_atoms(std::size_t n) {
+  std::vector<alpha::Index> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = alpha::Index(i);
+  return out;
+}
+
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
 // Residue identity: chain, number, insertion code and name.
@@ -82,6 +88,7 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
       {"max_probe_radius", length(c.max_probe_radius)},
       {"close_alpha_sq", c.close_alpha_sq},
       {"fill_alpha_sq", c.fill_alpha_sq},
+      {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
       {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},
       {"lining_residues", lining_residues(atoms, c.lining_atoms)},
   };
@@ -108,7 +115,8 @@ json site_list(const PocketRun& run) {
                    {"cavity_rank", s.index + 1},
                    {"score", score(c.score)},
                    {"sa_volume", length(c.sa_volume)},
-                   {"center", point(c.center)}});
+                   {"center", point(c.center)},
+                   {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)}});
   }
   return out;
 }
@@ -132,16 +140,14 @@ json tunnel_list(const PocketRun& run) {
 // same).
 std::string csv_number(double x) { return json(x).dump(); }
 
-// A CSV field: quoted (quotes doubled) when it holds a separator, a quote
-// or a line break.
+}  // namespace
+
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
   std::string q = "\"";
   for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
   return q + '"';
 }
-
-}  // namespace
 
 std::string residue_id(const Atom& a) {
   return a.chain + ':' + a.residue_name + ':' + std::to_string(a.seq_num) + icode_text(a.icode);
@@ -163,6 +169,15 @@ std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std:
   return first;
 }
 
+json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms) {
+  if (!structure.report.predicted) return nullptr;
+  const std::vector<alpha::Index> residues = residues_of(structure.atoms, atoms);
+  if (residues.empty()) return nullptr;
+  double sum = 0;
+  for (const alpha::Index i : residues) sum += structure.atoms[i].b_factor;
+  return length(sum / double(residues.size()));
+}
+
 std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format) {
   return "meshes/" + kind + "_" + std::to_string(rank) + "." + format;
 }
@@ -175,6 +190,7 @@ json pocket_report(const PocketRun& run) {
       {"file", run.file},
       {"format", r.format},
       {"gzipped", r.gzipped},
+      {"predicted", r.predicted},
       {"model", r.model},
       {"atoms_in_model", r.atoms_in_model},
       {"atoms_kept", r.kept},
@@ -183,7 +199,8 @@ json pocket_report(const PocketRun& run) {
         {"altloc", r.dropped_altloc},
         {"water", r.dropped_water},
         {"hetero", r.dropped_hetero},
-        {"hydrogen", r.dropped_hydrogen}}},
+        {"hydrogen", r.dropped_hydrogen},
+        {"plddt", r.dropped_plddt}}},
       {"hetero_groups", r.hetero_groups},
       {"warnings", r.warnings},
   };
@@ -193,6 +210,7 @@ json pocket_report(const PocketRun& run) {
       {"split_persistence", run.options.split_persistence},
       {"split_volume", run.options.split_volume},
       {"split_min_volume", run.options.split_min_volume},
+      {"min_plddt", run.min_plddt},
       {"radii", std::string(kRadiusTable)},
       {"alpha_sq", 0.0},
   };
@@ -202,7 +220,8 @@ json pocket_report(const PocketRun& run) {
                    {"pockets", run.search->cavities.pockets.size()},
                    {"voids", run.search->cavities.voids.size()},
                    {"sites", run.search->cavities.sites.size()},
-                   {"tunnels", run.search->cavities.tunnels.size()}};
+                   {"tunnels", run.search->cavities.tunnels.size()},
+                   {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
   return {
       {"alphapocket", run.version},
@@ -219,7 +238,7 @@ json pocket_report(const PocketRun& run) {
 std::string pockets_csv(const PocketRun& run) {
   std::string out =
       "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
-      "lining_residues,residues\n";
+      "lining_residues,residues,mean_plddt\n";
   const std::vector<Atom>& atoms = run.structure->atoms;
   std::size_t rank = 0;
   for (const Cavity& c : run.search->cavities.pockets) {
@@ -237,7 +256,9 @@ std::string pockets_csv(const PocketRun& run) {
     for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
                            length(c.center.z)})
       out += ',' + csv_number(x);
-    out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + '\n';
+    const json plddt = mean_plddt(*run.structure, c.lining_atoms);
+    out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + ',' +
+           (plddt.is_null() ? std::string() : plddt.dump()) + '\n';
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <charconv>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <span>
@@ -206,7 +207,10 @@ bool has_atoms(const gemmi::Structure& st) {
 }
 
 // `old_columns`: a PDB file whose columns 73-80 are not read.
-gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name, bool old_columns) {
+// *local_plddt: whether an mmCIF file has per-residue model quality
+// (ModelCIF's _ma_qa_metric_local, as AlphaFold DB's files).
+gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name, bool old_columns,
+                                  bool* local_plddt) {
   if (format == Format::Pdb) check_pdb_records(text, name, old_columns);
   gemmi::Structure st;
   std::vector<std::string> missing;
@@ -218,6 +222,7 @@ gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const st
     } else {
       gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
       st = gemmi::make_structure(doc);
+      *local_plddt = doc.blocks.at(0).find_mmcif_category("_ma_qa_metric_local.").ok();
       if (!has_atoms(st)) missing = missing_atom_site_columns(doc.blocks.at(0));
     }
     // Polymer, water or neither, where the file does not say (PDB files
@@ -409,10 +414,18 @@ std::string dropped_list(const StructureReport& r) {
   add(r.dropped_water, "water");
   add(r.dropped_hetero, "hetero");
   add(r.dropped_hydrogen, "hydrogen");
+  add(r.dropped_plddt, "low-pLDDT");
   return parts.empty() ? "none" : join(parts, parts.size());
 }
 
-Structure select(const gemmi::Structure& st, const StructureOptions& options, const std::string& name) {
+double mean_b_factor(const gemmi::Residue& r) {
+  double sum = 0;
+  for (const gemmi::Atom& a : r.atoms) sum += a.b_iso;
+  return r.atoms.empty() ? 0 : sum / double(r.atoms.size());
+}
+
+Structure select(const gemmi::Structure& st, const StructureOptions& options, const std::string& name,
+                 bool predicted) {
   const gemmi::Model& model = select_model(st, options.model, name);
   check_chains(model, options.chains, name);
   Structure out;
@@ -420,6 +433,10 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   report.models = st.models.size();
   report.model = model_number(model);
   report.model_index = std::size_t(&model - st.models.data());
+  report.predicted = predicted;
+  const bool by_plddt = predicted && options.min_plddt > 0;
+  if (options.min_plddt > 0 && !predicted)
+    report.warnings.push_back("not a predicted model (no pLDDT): --min-plddt ignored");
   RadiusAssigner radius;
   const auto wanted_chain = [&](const std::string& chain) {
     return options.chains.empty() ||
@@ -448,6 +465,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
         const std::vector<bool> keep = altloc_keep(res, chosen);
         const bool water = is_water(res);
         const bool hetero = !water && is_ligand(res, chain_has_atom_records);
+        const bool low_plddt = by_plddt && mean_b_factor(res) < options.min_plddt;
         HeteroGroup ligand{res.name, chain.name, seq_num(res), no_blank(res.seqid.icode), {}};
         for (std::size_t i = 0; i < res.atoms.size(); ++i) {
           const gemmi::Atom& a = res.atoms[i];
@@ -463,6 +481,8 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
             ++report.dropped_hetero;
           else if (is_hydrogen(a) && !options.keep_hydrogens)
             ++report.dropped_hydrogen;
+          else if (low_plddt)
+            ++report.dropped_plddt;
           else
             kept = true;
           if (!kept && !in_ligand) continue;
@@ -507,8 +527,10 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
   const Format format = detect_format(data, name);
   const std::optional<OldColumns> old = format == Format::Pdb ? old_format_columns(data) : std::nullopt;
-  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value());
-  Structure out = select(st, options, name);
+  bool local_plddt = false;
+  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value(), &local_plddt);
+  const bool af_name = std::filesystem::path(name).filename().string().rfind("AF-", 0) == 0;
+  Structure out = select(st, options, name, local_plddt || af_name);
   if (old)
     out.report.warnings.insert(out.report.warnings.begin(),
                                "columns 73-80 hold an old-format id code and line number (line " +

@@ -7,6 +7,10 @@
 //   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
 //                 molecule.<fmt> (molecule_mesh)
 //
+// Which of them are written (OutputSelection: all by default, batch
+// writes only the report); files of these names that this run does not
+// write are removed.
+//
 // The files appear all together or not at all: all are made in memory,
 // then written through write_files_atomically. Mesh files of an earlier
 // run in meshes/ that this run does not write again (it found fewer
@@ -21,12 +25,20 @@
 
 namespace molecule {
 
+struct OutputSelection {
+  bool report = true, csv = true, pml = true, pdb = true, meshes = true;
+};
+
+// "report,csv,pml,pdb,meshes" (any subset, any order) -> a selection;
+// throws alpha::Error naming an unknown item.
+OutputSelection parse_output_selection(const std::string& list);
+
 class PocketOutputDir {
 public:
   // Creates the directory and its meshes/ subdirectory where missing and
   // checks that files can be created there; throws alpha::Error with one
   // line naming the directory otherwise.
-  explicit PocketOutputDir(const std::string& path);
+  explicit PocketOutputDir(const std::string& path, const OutputSelection& selection = {});
   // Removes the directories the constructor created if no file was written
   // into them (the run failed before writing).
   ~PocketOutputDir();
@@ -38,7 +50,7 @@ public:
   // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
-  // Writes every file; structure_path is what pockets.pml loads. Returns
+  // Writes the selected files; structure_path is what pockets.pml loads. Returns
   // the names written, relative to the directory.
   std::vector<std::string> write(const PocketRun& run, const std::string& structure_path);
   // The same with report.json from `report` (pocket_report(run), built
@@ -48,12 +60,13 @@ public:
 
 private:
   std::filesystem::path path_;
+  OutputSelection selection_;
   std::vector<std::filesystem::path> created_;
   bool written_ = false;
   std::vector<std::string> warnings_;
 
   void create(const std::filesystem::path& dir);
-  void remove_stale_meshes(const std::vector<std::string>& written) const;
+  void remove_stale(const std::vector<std::string>& written) const;
 };
 
 }  // namespace molecule

@@ -29,7 +29,13 @@ struct PocketRun {
   std::string version;  // of alphapocket
   const PocketSearch* search = nullptr;
   std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
+  double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
 };
+
+// Predicted models: the mean pLDDT (B-factor) of the residues of these
+// atoms, one value per residue (its first atom's: a model gives all atoms
+// of a residue the same), rounded to 3 decimals; null for other structures.
+nlohmann::ordered_json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms);
 
 // "A:TYR:42", with the insertion code appended ("A:TYR:42B"): the residue
 // of an atom as pockets.csv and report.json name it.
@@ -45,6 +51,10 @@ std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std:
 // "meshes/molecule.<format>".
 std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format);
 std::string molecule_mesh_path(const std::string& format);
+
+// A CSV field: quoted (quotes doubled) when it holds a separator, a quote
+// or a line break.
+std::string csv_field(const std::string& s);
 
 nlohmann::ordered_json pocket_report(const PocketRun& run);
 std::string pockets_csv(const PocketRun& run);

@@ -22,7 +22,9 @@
 //      count as hetero even inside a polymer when their chain has no ATOM
 //      records (peptide ligands) or gemmi's tables do not know the residue
 //      as an amino acid or nucleotide (a covalently bound inhibitor);
-//   5. hydrogens (H and D) are dropped unless keep_hydrogens.
+//   5. hydrogens (H and D) are dropped unless keep_hydrogens;
+//   6. predicted models: residues whose pLDDT (mean B-factor of the
+//      residue's atoms) is below min_plddt.
 //
 // Each dropped atom is counted once, under the first reason that applies.
 // Every kept atom gets a radius from molecule/radii.hpp (ProtOr).
@@ -60,6 +62,10 @@ struct StructureOptions {
   bool keep_hydrogens = false;
   bool keep_waters = false;
   bool keep_hetero = false;
+  // Predicted models (StructureReport::predicted): residues whose pLDDT
+  // (the B-factor column) is below this are dropped, after every other
+  // reason. 0: none. Ignored, with a warning, for other structures.
+  double min_plddt = 0;
   // Fewer atoms after the selection is an error: a triangulation needs 4
   // (a union of balls, 1).
   std::size_t min_atoms = 4;
@@ -96,6 +102,10 @@ struct HeteroGroup {
 struct StructureReport {
   std::string format;  // "PDB" or "mmCIF"
   bool gzipped = false;
+  // A predicted model (AlphaFold DB and the like), whose B-factor column
+  // holds pLDDT: an mmCIF file with _ma_qa_metric_local, or a file named
+  // AF-*.
+  bool predicted = false;
   std::size_t models = 0;          // models in the file
   int model = 0;                   // number of the model read
   std::size_t model_index = 0;     // its position among the file's models, from 0
@@ -107,6 +117,7 @@ struct StructureReport {
   std::size_t dropped_water = 0;
   std::size_t dropped_hetero = 0;
   std::size_t dropped_hydrogen = 0;
+  std::size_t dropped_plddt = 0;  // residues below StructureOptions::min_plddt
   std::size_t hetero_groups = 0;  // = hetero_groups.size()
   // Problems that did not stop the reading, one line each (e.g. one per
   // unrecognised element among the kept atoms, which got

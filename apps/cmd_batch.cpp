@@ -1,0 +1,286 @@
+// alphapocket batch INPUT... -o OUTDIR [-j N] [--list FILE] [--outputs LIST]
+//                  [--max-atoms N] [the options of pockets]
+//
+// Many structures, one per worker thread: each goes through the same
+// pipeline as `pockets` (molecule::analyse), writes the chosen outputs to
+// OUTDIR/<id>/ and one record to OUTDIR/records.jsonl; the run's tables
+// (molecule/batch_tables.hpp) are written from the records at the end.
+// A re-run skips the structures whose record matches (same path, content
+// checksum, parameters and version). SIGINT/SIGTERM: no new structure is
+// started, the ones in flight finish, the tables are written.
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "alpha/input_file.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "interrupt.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/batch_inputs.hpp"
+#include "molecule/batch_record.hpp"
+#include "molecule/batch_tables.hpp"
+#include "molecule/checksum.hpp"
+#include "progress.hpp"
+
+#ifndef ALPHAPOCKET_VERSION
+#define ALPHAPOCKET_VERSION "unknown"
+#endif
+
+namespace alphapocket {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Exit codes (README, "Batch screening").
+constexpr int kSomeFailed = 3;
+constexpr int kNoneSucceeded = 4;
+
+struct BatchOptions {
+  std::vector<std::string> inputs;  // files, directories, "-"
+  std::vector<std::string> lists;   // --list
+  std::string output_dir;
+  unsigned jobs = 0;  // 0: all cores
+  std::string outputs = "report";
+  std::size_t max_atoms = 2'000'000;
+  molecule::AnalysisOptions analysis;
+};
+
+// The structures named by the command line, sorted by id.
+std::vector<molecule::BatchInput> collect_inputs(const BatchOptions& opt) {
+  std::vector<std::string> paths;
+  for (const std::string& input : opt.inputs) {
+    if (input != "-") {
+      paths.push_back(input);
+      continue;
+    }
+    const std::vector<std::string> listed = molecule::read_path_list(std::cin, "standard input", false, "");
+    paths.insert(paths.end(), listed.begin(), listed.end());
+  }
+  for (const std::string& list : opt.lists) {
+    const std::vector<std::string> listed = molecule::read_path_list_file(list);
+    paths.insert(paths.end(), listed.begin(), listed.end());
+  }
+  std::vector<molecule::BatchInput> inputs = molecule::batch_inputs(paths);
+  if (inputs.empty()) throw std::runtime_error("no structure files in the inputs");
+  return inputs;
+}
+
+// Everything that changes a structure's results or outputs.
+nlohmann::ordered_json parameters(const BatchOptions& opt) {
+  const molecule::AnalysisOptions& a = opt.analysis;
+  return {{"probe", a.cavities.probe},
+          {"min_volume", a.cavities.min_volume},
+          {"model", a.structure.model},
+          {"chains", a.structure.chains},
+          {"keep_hydrogens", a.structure.keep_hydrogens},
+          {"keep_waters", a.structure.keep_waters},
+          {"keep_hetero", a.structure.keep_hetero},
+          {"max_atoms", a.max_atoms},
+          {"outputs", opt.outputs},
+          {"mesh", a.mesh_format}};
+}
+
+class Batch {
+public:
+  Batch(const BatchOptions& opt, std::vector<molecule::BatchInput> inputs)
+      : opt_(opt), inputs_(std::move(inputs)), outdir_(opt.output_dir),
+        records_((outdir_ / molecule::kRecordsFile).string()),
+        key_(molecule::batch_key(parameters(opt), opt.analysis.version)),
+        previous_(molecule::index_records({records_})),
+        progress_(inputs_.size(), spdlog::get_level() <= spdlog::level::info) {}
+
+  // Runs the workers until every input is done or an interrupt; returns
+  // the exit code.
+  int run(unsigned jobs) {
+    Stopwatch time;
+    {
+      molecule::RecordAppender appender(records_);
+      appender_ = &appender;
+      std::vector<std::thread> workers;
+      for (unsigned k = 0; k < std::max(1u, jobs); ++k) workers.emplace_back([this] { work(); });
+      for (std::thread& t : workers) t.join();
+      appender_ = nullptr;
+    }
+    progress_.finish();
+    if (error_) std::rethrow_exception(error_);
+    return finish(time.seconds());
+  }
+
+private:
+  const BatchOptions& opt_;
+  const std::vector<molecule::BatchInput> inputs_;
+  const fs::path outdir_;
+  const std::string records_;
+  const std::string key_;
+  const std::map<std::string, molecule::RecordLocation> previous_;
+  Progress progress_;
+  molecule::RecordAppender* appender_ = nullptr;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<std::size_t> resumed_{0};
+  std::mutex error_mutex_;
+  std::exception_ptr error_;  // a record that could not be written: the run stops
+
+  void work() {
+    while (!interrupted()) {
+      const std::size_t i = next_++;
+      if (i >= inputs_.size()) return;
+      try {
+        process(inputs_[i]);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex_);
+        if (!error_) error_ = std::current_exception();
+        next_ = inputs_.size();  // no more work
+        return;
+      }
+    }
+  }
+
+  // The previous run's record of this input if it stands, else null.
+  const molecule::RecordLocation* done_before(const molecule::BatchInput& in, const std::string& checksum) const {
+    const auto it = previous_.find(in.id);
+    if (it == previous_.end()) return nullptr;
+    const molecule::RecordLocation& r = it->second;
+    if (r.path != in.path || r.checksum != checksum || r.key != key_) return nullptr;
+    if (r.category == molecule::failure_name(molecule::FailureKind::Internal)) return nullptr;  // worth a retry
+    std::error_code ec;
+    const bool outputs = r.status != "ok" || !opt_.analysis.outputs.report ||
+                         fs::exists(outdir_ / in.id / "report.json", ec);
+    return outputs ? &r : nullptr;
+  }
+
+  void process(const molecule::BatchInput& in) {
+    Stopwatch time;
+    molecule::BatchRecord r;
+    r.id = in.id;
+    r.path = in.path;
+    r.key = key_;
+    const auto failed = [&](const std::string& status, molecule::FailureKind kind, const std::string& message) {
+      r.status = status;
+      r.category = molecule::failure_name(kind);
+      r.message = message;
+      progress_.warn(in.id + ": " + r.category + ": " + message);
+    };
+    try {
+      std::string content;
+      std::string unreadable;  // why, if the file cannot be read
+      try {
+        content = alpha::read_input_file(in.path);
+        r.checksum = molecule::sha256_hex(content);
+      } catch (const alpha::Error& e) {
+        unreadable = e.what();
+      }
+      if (const molecule::RecordLocation* done = done_before(in, r.checksum)) {  // unreadable: if it was before
+        ++resumed_;
+        progress_.add(done->status != "ok");
+        return;
+      }
+      if (!unreadable.empty()) throw molecule::AnalysisError(molecule::FailureKind::BadInput, unreadable);
+      const molecule::Analysis analysis = molecule::analyse_content(in.path, content, opt_.analysis);
+      log_analysis(analysis, spdlog::level::debug);
+      molecule::PocketOutputDir out((outdir_ / in.id).string(), opt_.analysis.outputs);
+      molecule::write_outputs(analysis, out, absolute_path(in.path));
+      for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
+      r.status = "ok";
+      r.rows = molecule::report_rows(analysis.report);
+    } catch (const molecule::AnalysisError& e) {
+      failed(e.skipped() ? "skipped" : "failed", e.kind(), e.what());
+    } catch (const std::bad_alloc&) {
+      failed("failed", molecule::FailureKind::LimitExceeded, in.path + ": out of memory");
+    } catch (const std::exception& e) {  // e.g. the outputs could not be written
+      failed("failed", molecule::FailureKind::Internal, e.what());
+    }
+    r.seconds = time.seconds();
+    appender_->append(r);
+    progress_.add(r.status != "ok");
+  }
+
+  // Tables from the records of this run's inputs; the exit code.
+  int finish(double seconds) {
+    const std::map<std::string, molecule::RecordLocation> index = molecule::index_records({records_});
+    std::vector<std::pair<std::string, molecule::RecordLocation>> locations;
+    std::size_t ok = 0, failed = 0, skipped = 0;
+    for (const molecule::BatchInput& in : inputs_) {
+      const auto it = index.find(in.id);
+      if (it == index.end() || it->second.path != in.path || it->second.key != key_) continue;  // not done
+      locations.emplace_back(in.id, it->second);
+      const std::string& status = it->second.status;
+      (status == "ok" ? ok : status == "skipped" ? skipped : failed) += 1;
+    }
+    molecule::write_batch_tables(outdir_.string(), {records_}, locations);
+    const std::size_t missing = inputs_.size() - locations.size();
+    spdlog::info("{} structures: {} ok, {} failed, {} skipped ({} done before){} in {:.1f} s; tables in {}/",
+                 inputs_.size(), ok, failed, skipped, resumed_.load(),
+                 missing ? ", " + std::to_string(missing) + " not done (interrupted)" : std::string(), seconds,
+                 outdir_.string());
+    if (interrupted()) return 128 + interrupt_signal();
+    if (ok == inputs_.size()) return 0;
+    return ok == 0 ? kNoneSucceeded : kSomeFailed;
+  }
+};
+
+int run_batch(BatchOptions& opt) {
+  opt.analysis.version = ALPHAPOCKET_VERSION;
+  opt.analysis.max_atoms = opt.max_atoms;
+  opt.analysis.outputs = molecule::parse_output_selection(opt.outputs);
+  std::vector<molecule::BatchInput> inputs = collect_inputs(opt);  // errors (duplicate ids) before any work
+  std::error_code ec;
+  if (fs::exists(opt.output_dir, ec) && !fs::is_directory(opt.output_dir, ec))
+    throw std::runtime_error(opt.output_dir + ": cannot create the output directory: a file of that name exists");
+  if (!fs::is_directory(opt.output_dir, ec) && !fs::create_directory(opt.output_dir, ec))
+    throw std::runtime_error(opt.output_dir + ": cannot create the output directory: " + ec.message());
+  const unsigned jobs = opt.jobs ? opt.jobs : std::max(1u, std::thread::hardware_concurrency());
+  spdlog::info("{} structures, {} worker{}, outputs {} in {}/", inputs.size(), jobs, jobs == 1 ? "" : "s",
+               opt.outputs, opt.output_dir);
+  install_interrupt_handlers();
+  Batch batch(opt, std::move(inputs));
+  return batch.run(std::min<std::size_t>(jobs, std::numeric_limits<unsigned>::max()));
+}
+
+}  // namespace
+
+Subcommand add_batch_command(CLI::App& app) {
+  auto opt = std::make_shared<BatchOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "batch", "Find the pockets of many structures, in parallel, into one set of tables (CSV, TSV, SQLite)");
+  sub->footer(
+      "INPUT: structure files, directories (searched recursively for .pdb .ent .cif .mmcif, optionally .gz), or - "
+      "(paths on standard input). OUTDIR gets structures.csv, sites.csv, tunnels.csv, failures.tsv, "
+      "alphapocket.sqlite, records.jsonl and <id>/ per structure. Exit code 0: all succeeded, 3: some failed or "
+      "were skipped, 4: none succeeded, 128+N: stopped by signal N. See README.md, \"Batch screening\".");
+  sub->add_option("INPUT", opt->inputs, "Structure files, directories, or - for paths on standard input");
+  sub->add_option("--list", opt->lists,
+                  "File listing one path per line (# comments; a P2Rank .ds dataset: first column, relative to "
+                  "its directory); may be repeated");
+  sub->add_option("-o,--output-dir", opt->output_dir, "Directory for the tables and the structures' outputs")
+      ->required();
+  sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
+      ->check(CLI::Range(1u, 4096u));
+  sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes")
+      ->capture_default_str();
+  sub->add_option("--max-atoms", opt->max_atoms, "Structures with more atoms (after the selection) are skipped")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  add_structure_options(*sub, opt->analysis.structure, opt->analysis.cavities.probe);
+  add_cavity_options(*sub, opt->analysis);
+  return {sub, [opt] {
+            if (opt->inputs.empty() && opt->lists.empty())
+              throw std::runtime_error("batch: no INPUT and no --list (see --help)");
+            return run_batch(*opt);
+          }};
+}
+
+}  // namespace alphapocket

@@ -1,0 +1,76 @@
+// One structure from file to results: read, cavity search, report and the
+// chosen output files. `alphapocket pockets` and `alphapocket batch` both
+// run a structure through this, so the two cannot drift apart.
+//
+// Failures come back as AnalysisError with a category (what batch's
+// failures.tsv records): bad input (the file cannot be read, or its atoms
+// make no 3D complex), limit exceeded (more atoms than allowed, out of
+// memory) or internal (anything else: a bug, a full disk).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "alpha/error.hpp"
+#include "molecule/cavities.hpp"
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/structure.hpp"
+
+namespace molecule {
+
+enum class FailureKind { BadInput, LimitExceeded, Internal };
+
+// "bad_input", "limit_exceeded", "internal".
+std::string_view failure_name(FailureKind kind);
+
+class AnalysisError : public alpha::Error {
+public:
+  AnalysisError(FailureKind kind, const std::string& message, bool skipped = false)
+      : alpha::Error(message), kind_(kind), skipped_(skipped) {}
+  FailureKind kind() const { return kind_; }
+  // Not attempted: over AnalysisOptions::max_atoms.
+  bool skipped() const { return skipped_; }
+
+private:
+  FailureKind kind_;
+  bool skipped_;
+};
+
+struct AnalysisOptions {
+  StructureOptions structure;
+  CavityOptions cavities;
+  std::string version;  // of alphapocket, written into the report
+  // More atoms after the selection: LimitExceeded before the search. 0: no limit.
+  std::size_t max_atoms = 0;
+  OutputSelection outputs;
+  std::string mesh_format = "ply";  // "ply", "obj", "off", "stl"
+};
+
+// Everything one structure produced; owns all of it.
+struct Analysis {
+  std::string file;  // as given
+  AnalysisOptions options;
+  Structure structure;
+  PocketSearch search;
+  nlohmann::ordered_json report;  // pocket_report(run())
+
+  // The writers' view of it (borrows from *this: keep *this alive and in place).
+  PocketRun run() const;
+};
+
+// Reads `file` and searches its cavities; throws AnalysisError naming the file.
+Analysis analyse(const std::string& file, const AnalysisOptions& options);
+// The same from the file's bytes (read by the caller, e.g. to checksum them).
+Analysis analyse_content(const std::string& file, std::string_view content, const AnalysisOptions& options);
+
+// Writes the selected outputs (options.outputs) into `out`; structure_path
+// is what pockets.pml loads. Returns the names written; warnings in out.warnings().
+std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out,
+                                       const std::string& structure_path);
+
+}  // namespace molecule
