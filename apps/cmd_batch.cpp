@@ -171,6 +171,7 @@ private:
     const auto failed = [&](const std::string& status, molecule::FailureKind kind, const std::string& message) {
       r.status = status;
       r.category = molecule::failure_name(kind);
+      molecule::remove_pocket_outputs((outdir_ / in.id).string());  // an earlier run's
       r.message = message;
       progress_.warn(in.id + ": " + r.category + ": " + message);
     };

@@ -29,7 +29,7 @@ std::string Progress::line() const {
   const double rate = elapsed > 0 ? double(done_) / elapsed : 0;
   const std::string eta = rate > 0 ? duration_text(double(total_ - done_) / rate) : "?";
   char text[160];
-  std::snprintf(text, sizeof text, "%zu/%zu structures, %.1f/s, ETA %s, %zu failed", done_, total_, rate,
+  std::snprintf(text, sizeof text, "%zu/%zu structures, %.1f/s, ETA %s, %zu failed or skipped", done_, total_, rate,
                 eta.c_str(), failed_);
   if (!terminal_) return text;
   constexpr int kWidth = 30;

@@ -112,24 +112,41 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   return written;
 }
 
-void PocketOutputDir::remove_stale(const std::vector<std::string>& written) const {
+namespace {
+
+// Removes the files of ours in dir that are not among `written`, and
+// meshes/ if that leaves it empty and keep_meshes_dir is false.
+void remove_ours(const fs::path& dir, const std::vector<std::string>& written, bool keep_meshes_dir) {
   const auto is_written = [&](const std::string& name) {
     return std::find(written.begin(), written.end(), name) != written.end();
   };
   for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.pdb"}) {
     std::error_code rm;
-    if (!is_written(name)) fs::remove(path_ / name, rm);
+    if (!is_written(name)) fs::remove(dir / name, rm);
   }
   static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(path_ / "meshes", ec)) {
+  for (const auto& entry : fs::directory_iterator(dir / "meshes", ec)) {
     const std::string name = entry.path().filename().string();
     if (!std::regex_match(name, kOurs)) continue;
     if (is_written("meshes/" + name)) continue;
     std::error_code rm;
     fs::remove(entry.path(), rm);
   }
-  if (!selection_.meshes) fs::remove(path_ / "meshes", ec);  // only when empty
+  if (!keep_meshes_dir) fs::remove(dir / "meshes", ec);  // only when empty
+}
+
+}  // namespace
+
+void PocketOutputDir::remove_stale(const std::vector<std::string>& written) const {
+  remove_ours(path_, written, selection_.meshes);
+}
+
+void remove_pocket_outputs(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) return;
+  remove_ours(path, {}, false);
+  fs::remove(path, ec);  // only when empty
 }
 
 }  // namespace molecule

@@ -198,6 +198,12 @@ case "$case_name" in
     run batch "$tmp/in" -o "$tmp/o" -j 2
     grep -q '(5 done before)' "$tmp/err" || fail "not 5 done before after a change"
     [[ -n $(find "$tmp/o/1ytjA" -name report.json -newer "$tmp/first/records.jsonl") ]] || fail "1ytjA not redone"
+    # A structure that fails now: its earlier outputs go.
+    echo "HETATM garbage" >"$tmp/in/1fkgA.pdb"
+    run batch "$tmp/in" -o "$tmp/o" -j 2
+    [[ $(csv_get "$tmp/o/structures.csv" 1fkgA status) == failed ]] || fail "1fkgA did not fail"
+    [[ ! -e "$tmp/o/1fkgA" ]] || fail "1fkgA's outputs of the earlier run are left"
+    cp "$data/1fkgA.pdb" "$tmp/in/"
     run batch "$tmp/in" -o "$tmp/o" -j 2 --probe 1.5
     grep -q '(0 done before)' "$tmp/err" || fail "new parameters, yet something done before"
     ! cmp -s "$tmp/first/sites.csv" "$tmp/o/sites.csv" || fail "sites.csv unchanged with another probe"

@@ -69,4 +69,9 @@ private:
   void remove_stale(const std::vector<std::string>& written) const;
 };
 
+// Removes the files of an earlier run from directory `path` (only names of
+// the forms above), and the directory itself if that leaves it empty:
+// what a structure that now fails leaves of its outputs.
+void remove_pocket_outputs(const std::string& path);
+
 }  // namespace molecule
