@@ -234,6 +234,30 @@ case "$case_name" in
     [[ $rc -eq 3 ]] || fail "exit code $rc on the re-run"
     same_tables "$tmp/whole" "$tmp/o"
     ;;
+  interrupt_twice)
+    # A second signal abandons the structures in flight at once: exit 130,
+    # no file half-written, and a re-run completes the tables.
+    mkdir "$tmp/in"
+    cp "$pdb" "$data/1fbl.pdb" "$data/1UYD.pdb" "$data/1fkgA.pdb" "$data/3stdA.pdb" "$tmp/in/"
+    run -q batch "$tmp/in" -o "$tmp/whole" -j 2
+    expect_success
+    "$exe" -q batch "$tmp/in" -o "$tmp/o" -j 2 2>"$tmp/err" &
+    pid=$!
+    for _ in $(seq 600); do [[ -s "$tmp/o/records.jsonl" ]] && break; sleep 0.05; done
+    kill -INT $pid
+    sleep 0.05
+    kill -INT $pid 2>/dev/null || true
+    set +e
+    wait $pid
+    rc=$?
+    set -e
+    [[ $rc -eq 130 ]] || fail "exit code $rc after two SIGINTs, expected 130"
+    [[ ! -e "$tmp/o/structures.csv" ]] || fail "tables written: the second signal did not abandon the run"
+    for f in "$tmp/o"/*/report.json; do grep -q '^}$' "$f" || fail "$f is incomplete"; done
+    run -q batch "$tmp/in" -o "$tmp/o" -j 2
+    expect_success
+    same_tables "$tmp/whole" "$tmp/o"
+    ;;
   merge)
     # Two chunks merged: the tables of one run over both.
     make_inputs
