@@ -193,7 +193,7 @@ private:
       const molecule::Analysis analysis = molecule::analyse_content(in.path, content, opt_.analysis);
       log_analysis(analysis, spdlog::level::debug);
       molecule::PocketOutputDir out((outdir_ / in.id).string(), opt_.analysis.outputs);
-      molecule::write_outputs(analysis, out, absolute_path(in.path));
+      molecule::write_outputs(analysis, out);
       for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
       r.status = "ok";
       r.rows = molecule::report_rows(analysis.report);

@@ -131,13 +131,13 @@ int run_pockets(const PocketsOptions& opt) {
   log_analysis(analysis);
 
   Stopwatch write_time;
-  const std::vector<std::string> written = molecule::write_outputs(analysis, out, absolute_path(file));
+  const std::vector<std::string> written = molecule::write_outputs(analysis, out);
   for (const std::string& warning : out.warnings()) spdlog::warn("{}", warning);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 
   if (opt.json) {
-    std::puts(analysis.report.dump().c_str());
+    std::puts(analysis.report.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print_summary(opt, outdir, analysis.structure, analysis.search.cavities);
   }

@@ -160,12 +160,6 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
   return in;
 }
 
-std::string absolute_path(const std::string& file) {
-  std::error_code ec;
-  const std::filesystem::path p = std::filesystem::absolute(file, ec);
-  return ec ? file : p.lexically_normal().string();
-}
-
 void flush_stdout() {
   // ferror too: a failed write can leave nothing buffered for fflush to fail on.
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("cannot write to standard output");

@@ -92,10 +92,6 @@ private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// A structure file's path for the PyMOL script: absolute, so that the
-// script runs from anywhere.
-std::string absolute_path(const std::string& file);
-
 // Flushes stdout; throws when the results could not be written.
 void flush_stdout();
 

@@ -78,7 +78,7 @@ int run(const std::string& file, const std::string& outdir) {
     run.search = &search;
     run.mesh_format = "ply";
     molecule::PocketOutputDir out(outdir);
-    std::printf("wrote %zu files to %s\n", out.write(run, file).size(), outdir.c_str());
+    std::printf("wrote %zu files to %s\n", out.write(run).size(), outdir.c_str());
   }
   return 0;
 }

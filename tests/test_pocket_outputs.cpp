@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -26,8 +27,8 @@
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
-#include "molecule/pymol_script.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/structure_copy.hpp"
 #include "mesh_checks.hpp"
 #include "point_sets.hpp"
 
@@ -56,7 +57,7 @@ struct Run {
     run.search = &search;
     run.mesh_format = "ply";
     molecule::PocketOutputDir out((dir / "out").string());
-    written = out.write(run, kStructure);
+    written = out.write(run);
     report = json::parse(testing::read_text(dir / "out/report.json"));
   }
   fs::path file(const std::string& name) const { return dir / ("out/" + name); }
@@ -327,43 +328,68 @@ TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the oth
   using molecule::rank_color;
   CHECK(colors.pockets == std::vector<molecule::Rgb>{rank_color(1), rank_color(3)});
   CHECK(colors.voids == std::vector<molecule::Rgb>{rank_color(4), rank_color(2), rank_color(5)});
-  CHECK(rank_color(13) == rank_color(1));  // 12 colours, then again
-  CHECK(rank_color(1) != rank_color(2));
+  // No colour repeats (a cycle of 12 made site 13 red like site 1), nor
+  // is the molecule's, the tunnels' or the ligands'.
+  std::set<std::tuple<int, int, int>> seen;
+  for (const molecule::Rgb c : {molecule::kMoleculeColor, molecule::kTunnelColor, molecule::kLigandColor})
+    seen.insert({c.r, c.g, c.b});
+  for (std::size_t rank = 1; rank <= 250; ++rank) {
+    const molecule::Rgb c = rank_color(rank);
+    INFO(rank);
+    CHECK(seen.insert({c.r, c.g, c.b}).second);
+  }
 }
+
+namespace {
+
+// The atom ids of "select NAME, [NAME or ](OBJ and id 1-3+7)" lines, by
+// selection name.
+std::map<std::string, std::set<std::size_t>> pml_selections(const std::string& pml, const std::string& obj) {
+  std::map<std::string, std::set<std::size_t>> selected;
+  const std::regex kLine("select (\\w+), (?:\\1 or )?\\(" + obj + " and id ([0-9+-]+)\\)");
+  for (const std::string& line : lines_of(pml)) {
+    std::smatch m;
+    if (!std::regex_match(line, m, kLine)) continue;
+    for (const std::string& run : split(m[2], '+')) {
+      const std::size_t dash = run.find('-');
+      const std::size_t first = std::stoul(run.substr(0, dash));
+      const std::size_t last = dash == std::string::npos ? first : std::stoul(run.substr(dash + 1));
+      for (std::size_t id = first; id <= last; ++id) selected[m[1]].insert(id);
+    }
+  }
+  return selected;
+}
+
+}  // namespace
 
 TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the centres", "[pocket_outputs]") {
   const Run& r = the_run();
   const std::string pml = testing::read_text(r.file("pockets.pml"));
-  CHECK(pml.find("/cmd.load(\"" + kStructure + "\", \"1a26A\")\n") != std::string::npos);
-  // selection name -> its atoms as "chain:resi:name"
-  std::map<std::string, std::set<std::string>> selected;
+  // It loads the copy beside it, never the input by its path.
+  CHECK(pml.find("\"structure.cif\"), \"1a26A\")\n") != std::string::npos);
+  CHECK(pml.find(kStructure + "\"") == std::string::npos);
+  const std::map<std::string, std::set<std::size_t>> selected = pml_selections(pml, "1a26A");
   std::map<std::string, std::vector<double>> centers;
-  static const std::regex kClause(R"(\(1a26A and chain (\S+) and resi (\S+) and name (\S+)\))");
   for (const std::string& line : lines_of(pml)) {
-    if (line.rfind("select ", 0) == 0) {
-      const std::string name = line.substr(7, line.find(',') - 7);
-      for (std::sregex_iterator m(line.begin(), line.end(), kClause), end; m != end; ++m)
-        for (const std::string& atom : split((*m)[3], '+'))
-          selected[name].insert((*m)[1].str() + ":" + (*m)[2].str() + ":" + atom);
-    } else if (line.rfind("pseudoatom ", 0) == 0) {
-      const std::string name = line.substr(11, line.find(',') - 11);
-      double x = 0, y = 0, z = 0;
-      REQUIRE(std::sscanf(line.c_str() + line.find("pos=["), "pos=[%lf, %lf, %lf]", &x, &y, &z) == 3);
-      centers[name] = {x, y, z};
-    }
+    if (line.rfind("pseudoatom ", 0) != 0) continue;
+    const std::string name = line.substr(11, line.find(',') - 11);
+    double x = 0, y = 0, z = 0;
+    REQUIRE(std::sscanf(line.c_str() + line.find("pos=["), "pos=[%lf, %lf, %lf]", &x, &y, &z) == 3);
+    if (name.find("_space") == std::string::npos) centers[name] = {x, y, z};
   }
+  const std::vector<molecule::Atom>& atoms = r.structure.atoms;
   const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
   const auto check = [&](const json& list, const std::vector<molecule::Rgb>& color, const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string name = kind + "_" + std::to_string(i + 1);
       INFO(name);
-      std::set<std::string> atoms;  // "A:TYR:49" + "OH" -> "A:49:OH"
-      for (const json& a : list[i]["lining_atoms"]) {
-        const std::vector<std::string> residue = split(a["residue"].get<std::string>(), ':');
-        atoms.insert(residue[0] + ":" + residue[2] + ":" + a["name"].get<std::string>());
-      }
-      REQUIRE(!atoms.empty());
-      CHECK(selected[name] == atoms);
+      std::set<int> serials;  // of the report's lining atoms, against those of the selected ids
+      for (const json& a : list[i]["lining_atoms"]) serials.insert(a["serial"].get<int>());
+      std::set<int> picked;
+      REQUIRE(selected.count(name) == 1);
+      for (const std::size_t id : selected.at(name)) picked.insert(atoms.at(id - 1).serial);
+      REQUIRE(!serials.empty());
+      CHECK(picked == serials);
       REQUIRE(centers.count(name + "_center") == 1);
       for (int k = 0; k < 3; ++k)  // both print 3 decimals, rounded on their own
         CHECK(centers[name + "_center"][k] == Approx(list[i]["center"][k].get<double>()).margin(1.1e-3));
@@ -374,6 +400,10 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   };
   check(r.report["pockets"], colors.pockets, "pocket");
   check(r.report["voids"], colors.voids, "void");
+  // The ligand (CNA, left out of the search) is in the copy and selected.
+  REQUIRE(selected.count("ligands") == 1);
+  CHECK(selected.at("ligands").size() == r.structure.hetero_groups.at(0).atoms.size());
+  CHECK(*selected.at("ligands").begin() == atoms.size() + 1);
   // Tunnels: the bottleneck's atoms, and a sphere of the bottleneck radius
   // at its centre.
   const json& tunnels = r.report["tunnels"];
@@ -381,15 +411,36 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   for (std::size_t i = 0; i < tunnels.size(); ++i) {
     const std::string name = "tunnel_" + std::to_string(i + 1);
     INFO(name);
-    CHECK(selected[name].size() == 3);
+    CHECK(selected.at(name).size() == 3);
     REQUIRE(centers.count(name + "_bottleneck") == 1);
     for (int k = 0; k < 3; ++k)
       CHECK(centers[name + "_bottleneck"][k] ==
             Approx(tunnels[i]["bottleneck_center"][k].get<double>()).margin(1.1e-3));
-    CHECK(pml.find("pseudoatom " + name + "_bottleneck, ") != std::string::npos);
   }
   CHECK(pml.find("show spheres, tunnel_*_bottleneck\n") != std::string::npos);
   CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size() + tunnels.size());
+  // The best site is in the middle of the view.
+  CHECK(pml.find("\norient pocket_1_space or byres pocket_1\n") != std::string::npos);
+}
+
+TEST_CASE("pockets outputs: structure.cif reads back as the atoms searched, then the ligands", "[pocket_outputs]") {
+  const Run& r = the_run();
+  molecule::StructureOptions all;
+  all.keep_hetero = true;
+  const molecule::Structure copy = molecule::read_structure(r.file("structure.cif").string(), all);
+  CHECK(copy.report.format == "mmCIF");
+  const std::vector<molecule::Atom>& atoms = r.structure.atoms;
+  const std::vector<molecule::Atom>& ligand = r.structure.hetero_groups.at(0).atoms;
+  REQUIRE(copy.atoms.size() == atoms.size() + ligand.size());
+  for (std::size_t i = 0; i < copy.atoms.size(); ++i) {
+    const molecule::Atom& a = copy.atoms[i];
+    const molecule::Atom& b = i < atoms.size() ? atoms[i] : ligand[i - atoms.size()];
+    INFO(i);
+    CHECK(a.serial == int(i + 1));
+    CHECK(std::tie(a.name, a.residue_name, a.chain, a.seq_num, a.icode, a.element) ==
+          std::tie(b.name, b.residue_name, b.chain, b.seq_num, b.icode, b.element));
+    CHECK(alpha::norm(a.position - b.position) < 1e-3);
+  }
 }
 
 TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavity", "[pocket_outputs]") {
@@ -528,34 +579,22 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
   CHECK(residues[2]["number"] == -3);
   CHECK(report["pockets"][0].count("mesh") == 0);  // no mesh format: no meshes
 
-  // PyMOL selects by residue and name, with its special characters escaped.
-  s.atoms[1].name = "C1*";
-  run.file = "/x/1abc.pdb";
-  const std::string pml = molecule::pymol_script(run, run.file);
-  CHECK(pml.find("select pocket_1, (1abc and chain A and resi 42 and name CA+C1\\*) or "
-                 "(1abc and chain A and resi 42B and name CA) or (1abc and chain x,y and resi \\-3 and name CA)\n") !=
-        std::string::npos);
 }
 
-TEST_CASE("pockets outputs: pockets.pml of a file with several models shows the model searched",
+TEST_CASE("pockets outputs: structure.cif of a file with several models holds the model searched",
           "[pocket_outputs]") {
   const std::string file = std::string(ALPHAPOCKET_TEST_DATA) + "/1d3z_models_1_2.pdb.gz";
   molecule::StructureOptions second;
   second.model = 2;
   const molecule::Structure s = molecule::read_structure(file, second);
   CHECK(s.report.models == 2);
-  CHECK(s.report.model_index == 1);
-  const molecule::PocketSearch search = molecule::search_pockets(s, {});
-  molecule::PocketRun run;
-  run.file = file;
-  run.structure = &s;
-  run.search = &search;
-  const std::string pml = molecule::pymol_script(run, file);
-  CHECK(pml.find("/cmd.load(\"" + file + "\", \"1d3z_models_1_2_models\")\n/cmd.create(\"1d3z_models_1_2\", "
-                 "\"1d3z_models_1_2_models\", 2, 1); cmd.delete(\"1d3z_models_1_2_models\")\n") != std::string::npos);
-  // A single-model file loads as it is.
-  CHECK(the_run().report["input"]["model"] == 1);
-  CHECK(testing::read_text(the_run().file("pockets.pml")).find("cmd.create") == std::string::npos);
+  const molecule::Structure copy = molecule::parse_structure(molecule::structure_copy(s, "x").cif, "copy");
+  CHECK(copy.report.models == 1);
+  REQUIRE(copy.atoms.size() == s.atoms.size());
+  for (std::size_t i = 0; i < s.atoms.size(); ++i) CHECK(alpha::norm(copy.atoms[i].position - s.atoms[i].position) < 1e-3);
+  // Model 1 differs there: the copy is not the first model.
+  const molecule::Structure first = molecule::read_structure(file);
+  CHECK(alpha::norm(first.atoms[0].position - copy.atoms[0].position) > 1e-3);
 }
 
 TEST_CASE("pockets outputs: output directory errors leave nothing behind", "[pocket_outputs]") {
@@ -600,7 +639,7 @@ TEST_CASE("pockets outputs: meshes of an earlier run are replaced, other files k
   molecule::PocketOutputDir out((dir / "out").string());
   molecule::PocketRun run = r.run;
   run.mesh_format = "obj";
-  const std::vector<std::string> written = out.write(run, kStructure);
+  const std::vector<std::string> written = out.write(run);
   CHECK(std::count(written.begin(), written.end(), "meshes/molecule.obj") == 1);
   CHECK_FALSE(fs::exists(dir / "out/meshes/pocket_999.ply"));
   CHECK_FALSE(fs::exists(dir / "out/meshes/void_1.stl"));
@@ -619,7 +658,7 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
   const Run& r = the_run();
   TempDir dir;
   molecule::PocketOutputDir out((dir / "out").string());
-  out.write(r.run, kStructure);
+  out.write(r.run);
   // The last file to be made cannot be written: a directory of its name.
   fs::remove(dir / "out/meshes/molecule.ply");
   fs::create_directory(dir / "out/meshes/molecule.ply");
@@ -628,7 +667,7 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
     if (e.is_regular_file()) before[e.path().string()] = testing::read_text(e.path());
   molecule::PocketRun other = r.run;
   other.version = "other";
-  CHECK_THROWS_WITH(out.write(other, kStructure), Catch::Contains("molecule.ply: is a directory"));
+  CHECK_THROWS_WITH(out.write(other), Catch::Contains("molecule.ply: is a directory"));
   std::map<std::string, std::string> after;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) after[e.path().string()] = testing::read_text(e.path());
@@ -646,7 +685,7 @@ TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot h
   run.search = &search;
   TempDir dir;
   molecule::PocketOutputDir out((dir / "out").string());
-  out.write(run, kStructure);
+  out.write(run);
   const std::string text = testing::read_text(dir / "out/pockets.pdb");
   const std::size_t cavities = search.cavities.pockets.size() + search.cavities.voids.size();
   REQUIRE(cavities > 0);
@@ -658,6 +697,6 @@ TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot h
   CHECK(json::parse(testing::read_text(dir / "out/report.json"))["pockets"].size() == search.cavities.pockets.size());
   // A normal run has no warning.
   molecule::PocketOutputDir near((dir / "near").string());
-  near.write(r.run, kStructure);
+  near.write(r.run);
   CHECK(near.warnings().empty());
 }

@@ -69,9 +69,8 @@ Analysis analyse_content(const std::string& file, std::string_view content, cons
   return analysed(file, options, [&] { return parse_structure(content, file, options.structure); });
 }
 
-std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out,
-                                       const std::string& structure_path) {
-  return out.write(analysis.run(), analysis.report, structure_path);
+std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out) {
+  return out.write(analysis.run(), analysis.report);
 }
 
 }  // namespace molecule

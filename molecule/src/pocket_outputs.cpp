@@ -11,6 +11,9 @@
 #include "molecule/pocket_colors.hpp"
 #include "molecule/pocket_pdb.hpp"
 #include "molecule/pymol_script.hpp"
+#include "molecule/chimerax_script.hpp"
+#include "molecule/structure_copy.hpp"
+#include "molecule/viewer_scene.hpp"
 
 namespace molecule {
 
@@ -65,19 +68,26 @@ void PocketOutputDir::create(const fs::path& dir) {
   created_.push_back(dir);
 }
 
-std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const std::string& structure_path) {
-  return write(run, pocket_report(run), structure_path);
-}
+std::vector<std::string> PocketOutputDir::write(const PocketRun& run) { return write(run, pocket_report(run)); }
 
-std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nlohmann::ordered_json& report,
-                                                const std::string& structure_path) {
+std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nlohmann::ordered_json& report) {
   // Every file is made in memory first, so that a failure (a mesh OpenMesh
   // refuses, a full disk) leaves the directory as it was.
   std::vector<std::pair<std::string, std::string>> files;  // (name, content)
   warnings_.clear();
-  if (selection_.report) files.emplace_back("report.json", report.dump(2) + "\n");
+  // Invalid UTF-8 in the input's names is replaced, not an error.
+  if (selection_.report)
+    files.emplace_back("report.json",
+                       report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
   if (selection_.csv) files.emplace_back("pockets.csv", pockets_csv(run));
-  if (selection_.pml) files.emplace_back("pockets.pml", pymol_script(run, structure_path));
+  if (selection_.pml) {
+    StructureCopy copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " +
+                                                            run.file + ", and its ligands");
+    const ViewerScene scene = viewer_scene(run, copy.ligand_ids);
+    files.emplace_back("structure.cif", std::move(copy.cif));
+    files.emplace_back("pockets.pml", pymol_script(run, scene));
+    files.emplace_back("pockets.cxc", chimerax_script(run, scene));
+  }
   const alpha::AlphaComplex& ac = *run.search->complex;
   const Cavities& cavities = run.search->cavities;
   if (selection_.pdb) {
@@ -120,7 +130,7 @@ void remove_ours(const fs::path& dir, const std::vector<std::string>& written, b
   const auto is_written = [&](const std::string& name) {
     return std::find(written.begin(), written.end(), name) != written.end();
   };
-  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.pdb"}) {
+  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif", "pockets.pdb"}) {
     std::error_code rm;
     if (!is_written(name)) fs::remove(dir / name, rm);
   }

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "alpha/sizes.hpp"
+#include "molecule/safe_text.hpp"
 
 namespace molecule {
 namespace {
@@ -47,19 +48,24 @@ private:
 
 }  // namespace
 
-PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
+std::vector<SinkSphere> sink_spheres(const alpha::AlphaComplex& ac, const Cavity& cavity) {
   const alpha::Triangulation& t = ac.triangulation();
   const alpha::SizeKernel sizes = ac.size_kernel();
+  std::vector<SinkSphere> out;
+  for (const alpha::Index c : cavity.sinks) {
+    const alpha::Simplex tetra(t.cell(c).v);
+    out.push_back({sizes.center(tetra), std::sqrt(std::fmax(sizes.size(tetra).value, 0.0))});
+  }
+  return out;
+}
 
+PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title) {
   HetatmWriter pdb;
   const auto write = [&](const std::vector<Cavity>& list, char chain) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const Cavity& cavity = list[i];
       pdb.hetatm(" CEN", chain, i + 1, cavity.center, 0);
-      for (const alpha::Index c : cavity.sinks) {
-        const alpha::Simplex tetra(t.cell(c).v);
-        pdb.hetatm(" SNK", chain, i + 1, sizes.center(tetra), std::sqrt(std::fmax(sizes.size(tetra).value, 0.0)));
-      }
+      for (const SinkSphere& sink : sink_spheres(ac, cavity)) pdb.hetatm(" SNK", chain, i + 1, sink.center, sink.radius);
     }
   };
   write(cavities.pockets, 'P');
@@ -69,7 +75,7 @@ PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, co
 
   PocketPdb out;
   out.left_out = pdb.left_out();
-  remark(out.text, title);
+  remark(out.text, printable_ascii(title));
   remark(out.text, "cavities as pseudo-atoms: residue STP, residue number = rank,");
   remark(out.text, "chain P = pockets, chain V = voids; atom CEN = cavity centre,");
   remark(out.text, "atom SNK = orthocentre of a sink tetrahedron (B = its radius, A);");

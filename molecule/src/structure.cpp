@@ -490,6 +490,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
           check_position(atom, name);
           atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
+          ligand.kept = ligand.kept || (kept && in_ligand);
           if (kept) out.atoms.push_back(std::move(atom));
         }
         if (!ligand.atoms.empty()) out.hetero_groups.push_back(std::move(ligand));

@@ -24,7 +24,7 @@ summary_counts() {
 # CEN pseudo-atom and one mesh per pocket (and per void).
 expect_consistent() {  # DIR POCKETS VOIDS EXT
   local dir=$1 pockets=$2 voids=$3 ext=$4
-  for f in report.json pockets.csv pockets.pml pockets.pdb "meshes/molecule.$ext"; do
+  for f in report.json pockets.csv pockets.pml pockets.cxc structure.cif pockets.pdb "meshes/molecule.$ext"; do
     [[ -s "$dir/$f" ]] || fail "$dir/$f missing or empty"
   done
   [[ $(($(wc -l <"$dir/pockets.csv") - 1)) -eq $pockets ]] || fail "pockets.csv: not $pockets rows"
@@ -40,7 +40,7 @@ expect_consistent() {  # DIR POCKETS VOIDS EXT
 case "$case_name" in
   default)
     # A bare run: OUTDIR is <name>_pockets in the current directory; the
-    # PyMOL script loads the structure by its absolute path.
+    # viewer scripts load the copy of the structure beside them, not FILE.
     mkdir "$tmp/work"
     cp "$pdb" "$tmp/work/1a26A.pdb"
     cd "$tmp/work"
@@ -56,9 +56,10 @@ case "$case_name" in
       fail "no line for the widest tunnel"
     [[ $(wc -l <"$tmp/out") -le 24 ]] || fail "the summary is longer than one screen"
     expect_consistent 1a26A_pockets "$pockets" "$voids" ply
-    grep -qF "/cmd.load(\"$tmp/work/1a26A.pdb\", \"1a26A\")" 1a26A_pockets/pockets.pml ||
-      fail "pockets.pml does not load the structure by its absolute path"
-    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 5 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
+    grep -qF '"structure.cif"), "1a26A")' 1a26A_pockets/pockets.pml || fail "pockets.pml does not load structure.cif"
+    grep -qx 'open structure.cif' 1a26A_pockets/pockets.cxc || fail "pockets.cxc does not open structure.cif"
+    ! grep -qF "$tmp" 1a26A_pockets/pockets.pml 1a26A_pockets/pockets.cxc || fail "a script names an absolute path"
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 7 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
     ;;
   json)
     # --json: the report on one line, the same as report.json.

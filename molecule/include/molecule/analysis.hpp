@@ -68,9 +68,8 @@ Analysis analyse(const std::string& file, const AnalysisOptions& options);
 // The same from the file's bytes (read by the caller, e.g. to checksum them).
 Analysis analyse_content(const std::string& file, std::string_view content, const AnalysisOptions& options);
 
-// Writes the selected outputs (options.outputs) into `out`; structure_path
-// is what pockets.pml loads. Returns the names written; warnings in out.warnings().
-std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out,
-                                       const std::string& structure_path);
+// Writes the selected outputs (options.outputs) into `out`. Returns the
+// names written; warnings in out.warnings().
+std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out);
 
 }  // namespace molecule

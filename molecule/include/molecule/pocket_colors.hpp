@@ -1,10 +1,13 @@
 // The colour of a pocket or void, the same in every output (mesh face
-// colours, the PyMOL script): a cycle of 12 colours that stay apart from
-// each other and from the grey of the molecule, given in the order of the
-// binding sites (Cavities::sites), so that the best site is red whether it
-// is a pocket or a void.
+// colours, the viewer scripts), given in the order of the binding sites
+// (Cavities::sites), so that the best site is red whether it is a pocket
+// or a void. The first 12 are chosen to stay apart from each other, from
+// the grey of the molecule, the cyan of the tunnels and the yellow of the
+// ligands; after them come hues around the colour wheel (the golden angle
+// apart) in six shades: no colour repeats among the first 250.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -15,25 +18,44 @@
 namespace molecule {
 
 inline constexpr std::array<Rgb, 12> kPocketPalette{{
-    {228, 26, 28},   // red
-    {55, 126, 184},  // blue
-    {77, 175, 74},   // green
-    {152, 78, 163},  // purple
-    {255, 127, 0},   // orange
-    {23, 190, 207},  // cyan
-    {166, 86, 40},   // brown
-    {247, 129, 191}, // pink
-    {188, 189, 34},  // olive
-    {31, 58, 147},   // navy
-    {0, 128, 128},   // teal
-    {140, 20, 70},   // wine
+    {228, 26, 28},    // red
+    {55, 126, 184},   // blue
+    {77, 175, 74},    // green
+    {152, 78, 163},   // purple
+    {255, 127, 0},    // orange
+    {247, 129, 191},  // pink
+    {166, 86, 40},    // brown
+    {31, 58, 147},    // navy
+    {140, 20, 70},    // wine
+    {166, 216, 84},   // lime
+    {202, 178, 214},  // lavender
+    {0, 100, 60},     // dark green
 }};
 
-// The molecule's own surface.
+// The molecule's own surface, the tunnels' bottlenecks, the ligands' carbons.
 inline constexpr Rgb kMoleculeColor{200, 200, 200};
+inline constexpr Rgb kTunnelColor{0, 255, 255};
+inline constexpr Rgb kLigandColor{255, 255, 0};
 
 // rank counts from 1.
-inline Rgb rank_color(std::size_t rank) { return kPocketPalette[(rank - 1) % kPocketPalette.size()]; }
+inline Rgb rank_color(std::size_t rank) {
+  if (rank >= 1 && rank <= kPocketPalette.size()) return kPocketPalette[rank - 1];
+  const std::size_t k = rank - kPocketPalette.size();
+  const double hue = std::fmod(double(k) * 0.3819660112501051, 1.0) * 6;  // golden angle, in sextants
+  const double value = 0.95 - 0.25 * double((k / 7) % 3), saturation = 0.75 - 0.2 * double((k / 3) % 2);
+  const double chroma = value * saturation, x = chroma * (1 - std::fabs(std::fmod(hue, 2) - 1)), m = value - chroma;
+  double r = 0, g = 0, b = 0;
+  switch (int(hue)) {
+    case 0: r = chroma, g = x; break;
+    case 1: r = x, g = chroma; break;
+    case 2: g = chroma, b = x; break;
+    case 3: g = x, b = chroma; break;
+    case 4: r = x, b = chroma; break;
+    default: r = chroma, b = x; break;
+  }
+  const auto byte = [m](double v) { return std::uint8_t(std::lround((v + m) * 255)); };
+  return {byte(r), byte(g), byte(b)};
+}
 
 // The colour of each pocket and void (indices as in Cavities): rank_color
 // of its site rank, then, for the voids that are not sites, of the ranks

@@ -2,7 +2,10 @@
 //
 //   report.json   every result (pocket_report), indented
 //   pockets.csv   one row per pocket (pockets_csv)
+//   structure.cif the atoms searched and the ligands (structure_copy),
+//                 which the viewer scripts load by a relative path
 //   pockets.pml   PyMOL script (pymol_script)
+//   pockets.cxc   ChimeraX script (chimerax_script)
 //   pockets.pdb   cavity centres and sinks as pseudo-atoms (pocket_pdb)
 //   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
 //                 molecule.<fmt> (molecule_mesh)
@@ -26,7 +29,8 @@
 namespace molecule {
 
 struct OutputSelection {
-  bool report = true, csv = true, pml = true, pdb = true, meshes = true;
+  bool report = true, csv = true, pdb = true, meshes = true;
+  bool pml = true;  // the viewer scripts: pockets.pml, pockets.cxc and structure.cif
 };
 
 // "report,csv,pml,pdb,meshes" (any subset, any order) -> a selection;
@@ -50,13 +54,12 @@ public:
   // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
-  // Writes the selected files; structure_path is what pockets.pml loads. Returns
-  // the names written, relative to the directory.
-  std::vector<std::string> write(const PocketRun& run, const std::string& structure_path);
+  // Writes the selected files. Returns the names written, relative to the
+  // directory.
+  std::vector<std::string> write(const PocketRun& run);
   // The same with report.json from `report` (pocket_report(run), built
   // once by a caller that also prints it).
-  std::vector<std::string> write(const PocketRun& run, const nlohmann::ordered_json& report,
-                                 const std::string& structure_path);
+  std::vector<std::string> write(const PocketRun& run, const nlohmann::ordered_json& report);
 
 private:
   std::filesystem::path path_;

@@ -14,6 +14,7 @@
 // ends with END.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "alpha/alpha_complex.hpp"
 #include "molecule/cavities.hpp"
@@ -29,7 +30,17 @@ struct PocketPdb {
   std::size_t left_out = 0;
 };
 
-// The file; `title` goes into the first REMARK.
+// A sink of a cavity's flow as pockets.pdb's SNK atom has it: the
+// orthocentre of the tetrahedron and its orthosphere's radius (0 when
+// negative), A. The viewer scripts draw the same spheres.
+struct SinkSphere {
+  alpha::Vec3 center;
+  double radius = 0;
+};
+std::vector<SinkSphere> sink_spheres(const alpha::AlphaComplex& ac, const Cavity& cavity);
+
+// The file; `title` goes into the first REMARK (made printable ASCII: a
+// newline in a file name cannot start a record).
 PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
 
 }  // namespace molecule

@@ -97,6 +97,7 @@ struct HeteroGroup {
   int seq_num = 0;
   char icode = '\0';
   std::vector<Atom> atoms;  // never empty
+  bool kept = false;        // its atoms are among Structure::atoms (a kept hetero group)
 };
 
 struct StructureReport {

@@ -1,0 +1,57 @@
+// What the viewer scripts (pockets.pml for PyMOL, pockets.cxc for
+// ChimeraX) show, computed once for both: the structure object, each
+// cavity with its site rank, colour, lining atoms (as atom ids of
+// structure.cif, molecule/structure_copy.hpp) and the spheres of its space,
+// the ligands and the tunnels. Only names we make (pocket_3, void_1, an
+// object name of letters, digits and '_') and numbers are in it: nothing
+// from the input file reaches a script.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "alpha/geometry.hpp"
+#include "molecule/mesh_export.hpp"
+#include "molecule/pocket_pdb.hpp"
+#include "molecule/pocket_report.hpp"
+
+namespace molecule {
+
+// Sites shown when a script opens; the others are there, hidden. Their
+// colours never repeat (molecule::rank_color).
+inline constexpr std::size_t kShownSites = 12;
+
+struct SceneCavity {
+  std::string name;            // "pocket_3", "void_1"
+  std::size_t site_rank = 0;   // its rank among the binding sites; 0: not a site (a small void)
+  Rgb color;                   // cavity_colors
+  bool shown = false;          // a site of rank <= kShownSites
+  std::vector<std::size_t> lining_ids;  // atom ids in structure.cif
+  alpha::Vec3 center;
+  std::vector<SinkSphere> space;  // its sinks' orthospheres (pockets.pdb's SNK atoms)
+};
+
+struct SceneTunnel {
+  std::string name;  // "tunnel_1"
+  std::vector<std::size_t> lining_ids;
+  SinkSphere bottleneck;  // the largest probe passing it
+};
+
+struct ViewerScene {
+  std::string object;  // the structure's object name, from the file name
+  std::vector<SceneCavity> cavities;  // in site order, then the voids that are no site
+  std::vector<std::size_t> ligand_ids;
+  std::vector<SceneTunnel> tunnels;
+};
+
+// The structure file's object name in the viewers: FILE's name up to its
+// first '.', letters, digits and '_' only ("1a26A").
+std::string viewer_object_name(const std::string& file);
+
+ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& ligand_ids);
+
+// "12-15+20" style runs of ascending ids: consecutive ids as first-last,
+// joined by `join` (PyMOL: "+").
+std::string id_ranges(const std::vector<std::size_t>& ids, const std::string& join, const std::string& dash);
+
+}  // namespace molecule

@@ -1,0 +1,131 @@
+#include "molecule/chimerax_script.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "molecule/pocket_colors.hpp"
+#include "molecule/safe_text.hpp"
+
+namespace molecule {
+namespace {
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", x);
+  return buf;
+}
+
+// rgb(r,g,b): a colour no atom spec can be read into (unlike #rrggbb).
+std::string rgb(Rgb c) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "rgb(%d,%d,%d)", c.r, c.g, c.b);
+  return buf;
+}
+
+// Atoms of model #1 by serial number (ids not empty): "(#1 &
+// @@serial_number>=12 & @@serial_number<=15) | (#1 & @@serial_number=20)".
+std::string atoms_spec(const std::vector<std::size_t>& ids) {
+  std::string s;
+  for (std::size_t k = 0; k < ids.size();) {
+    std::size_t end = k + 1;
+    while (end < ids.size() && ids[end] == ids[end - 1] + 1) ++end;
+    if (!s.empty()) s += " | ";
+    s += end - k == 1 ? "(#1 & @@serial_number=" + std::to_string(ids[k]) + ")"
+                      : "(#1 & @@serial_number>=" + std::to_string(ids[k]) +
+                            " & @@serial_number<=" + std::to_string(ids[end - 1]) + ")";
+    k = end;
+  }
+  return s;
+}
+
+std::string marker(const std::string& model, const SinkSphere& sphere, Rgb color) {
+  const alpha::Vec3& p = sphere.center;
+  return "marker " + model + " position " + number(p.x) + "," + number(p.y) + "," + number(p.z) + " color " +
+         rgb(color) + " radius " + number(std::max(sphere.radius, 0.05)) + "\n";
+}
+
+std::string header(const PocketRun& run, const ViewerScene& scene) {
+  // No ';' in a comment: ChimeraX separates commands there.
+  std::string s = "# alphapocket " + printable_ascii(run.version, ";") + ": pockets of " +
+                  printable_ascii(run.file, ";") + "\n";
+  s += "# Open with `chimerax pockets.cxc` or `open pockets.cxc` in ChimeraX. Model #1 is structure.cif\n";
+  s += "# (" + scene.object + ": the atoms searched and the ligands). Coloured by site rank (report.json sites).\n";
+  s += "# pocket_N names the atoms lining pocket N (void_N likewise). #2 holds the cavities' spaces (spheres\n";
+  s += "# at their sinks), #3 their centres, #4 the tunnels' bottlenecks (cyan). Sites after the " +
+       std::to_string(kShownSites) + "th are hidden.\n";
+  return s;
+}
+
+std::string structure(const ViewerScene& scene) {
+  std::string s = "open structure.cif\n";
+  s += "rename #1 " + scene.object + "\n";
+  s += "hide #1 atoms\n";
+  s += "show #1 cartoons\n";
+  s += "color #1 " + rgb(kMoleculeColor) + "\n";
+  if (!scene.ligand_ids.empty()) {
+    s += "name ligands " + atoms_spec(scene.ligand_ids) + "\n";
+    s += "show ligands atoms\n";
+    s += "style ligands stick\n";
+    s += "color ligands byhetero\n";
+    s += "color ligands & C " + rgb(kLigandColor) + "\n";
+  }
+  s += "surface #1\n";
+  s += "color #1 rgb(179,179,179) target s\n";
+  s += "transparency #1 75 target s\n";
+  return s;
+}
+
+std::string cavities(const ViewerScene& scene) {
+  std::string s;
+  for (std::size_t k = 0; k < scene.cavities.size(); ++k) {
+    const SceneCavity& c = scene.cavities[k];
+    const std::string space = "#2." + std::to_string(k + 1), center = "#3." + std::to_string(k + 1);
+    s += "name " + c.name + " " + atoms_spec(c.lining_ids) + "\n";
+    for (const SinkSphere& sphere : c.space) s += marker(space, sphere, c.color);
+    s += marker(center, {c.center, 0.4}, c.color);
+    if (!c.space.empty()) s += "rename " + space + " " + c.name + "_space\n";
+    s += "rename " + center + " " + c.name + "_center\n";
+  }
+  // Worst site first: the best one's colour is the one left on shared atoms.
+  for (std::size_t k = scene.cavities.size(); k-- > 0;) {
+    const SceneCavity& c = scene.cavities[k];
+    if (c.shown) {
+      s += "show " + c.name + " atoms\n";
+      s += "style " + c.name + " stick\n";
+      s += "color " + c.name + " & C " + rgb(c.color) + "\n";
+    } else {
+      if (!c.space.empty()) s += "hide #2." + std::to_string(k + 1) + " models\n";
+      s += "hide #3." + std::to_string(k + 1) + " models\n";
+    }
+  }
+  if (!scene.cavities.empty()) {
+    s += "transparency #2 15 target a\n";
+  }
+  return s;
+}
+
+std::string tunnels(const ViewerScene& scene) {
+  std::string s;
+  for (std::size_t k = 0; k < scene.tunnels.size(); ++k) {
+    const SceneTunnel& t = scene.tunnels[k];
+    const std::string model = "#4." + std::to_string(k + 1);
+    s += "name " + t.name + " " + atoms_spec(t.lining_ids) + "\n";
+    s += marker(model, t.bottleneck, kTunnelColor);
+    s += "rename " + model + " " + t.name + "_bottleneck\n";
+  }
+  if (!scene.tunnels.empty()) s += "transparency #4 50 target a\n";
+  return s;
+}
+
+std::string view(const ViewerScene& scene) {
+  if (scene.cavities.empty() || scene.cavities.front().site_rank != 1) return "view #1\n";
+  return "view " + scene.cavities.front().name + " | #3.1\n";
+}
+
+}  // namespace
+
+std::string chimerax_script(const PocketRun& run, const ViewerScene& scene) {
+  return header(run, scene) + structure(scene) + cavities(scene) + tunnels(scene) + view(scene);
+}
+
+}  // namespace molecule

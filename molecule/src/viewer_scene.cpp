@@ -1,0 +1,94 @@
+#include "molecule/viewer_scene.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <string_view>
+
+#include "alpha/sizes.hpp"
+#include "molecule/pocket_colors.hpp"
+
+namespace molecule {
+namespace {
+
+// Names PyMOL or ChimeraX read as something else, and our own objects'.
+bool reserved(std::string_view name) {
+  static constexpr std::array<std::string_view, 14> kWords{"all",     "none",    "sele",   "enabled", "visible",
+                                                          "center",  "origin",  "ligands", "spaces",  "centers",
+                                                          "tunnels", "cavities", "same",   "structure"};
+  std::string lower(name);
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return std::find(kWords.begin(), kWords.end(), lower) != kWords.end() || lower.rfind("pocket_", 0) == 0 ||
+         lower.rfind("void_", 0) == 0 || lower.rfind("tunnel_", 0) == 0 || lower.rfind("ap_", 0) == 0;
+}
+
+std::vector<std::size_t> ids_of(const std::vector<alpha::Index>& atoms) {
+  std::vector<std::size_t> ids;
+  for (const alpha::Index i : atoms) ids.push_back(std::size_t(i) + 1);  // structure_copy's ids
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+std::string viewer_object_name(const std::string& file) {
+  std::string stem = std::filesystem::path(file).filename().string();
+  stem = stem.substr(0, stem.find('.'));
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  if (stem.empty()) return "structure";
+  return reserved(stem) ? stem + "_molecule" : stem;
+}
+
+ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& ligand_ids) {
+  const Cavities& cavities = run.search->cavities;
+  const alpha::AlphaComplex& ac = *run.search->complex;
+  const CavityColors colors = cavity_colors(cavities);
+  ViewerScene scene;
+  scene.object = viewer_object_name(run.file);
+  scene.ligand_ids = ligand_ids;
+  const auto add = [&](bool is_void, std::size_t index, std::size_t site_rank) {
+    const Cavity& c = is_void ? cavities.voids.at(index) : cavities.pockets.at(index);
+    SceneCavity s;
+    s.name = std::string(is_void ? "void_" : "pocket_") + std::to_string(index + 1);
+    s.site_rank = site_rank;
+    s.color = (is_void ? colors.voids : colors.pockets).at(index);
+    s.shown = site_rank >= 1 && site_rank <= kShownSites;
+    s.lining_ids = ids_of(c.lining_atoms);
+    s.center = c.center;
+    s.space = sink_spheres(ac, c);
+    scene.cavities.push_back(std::move(s));
+  };
+  std::vector<bool> void_is_site(cavities.voids.size(), false);
+  std::size_t rank = 0;
+  for (const Site& site : cavities.sites) {
+    add(site.is_void, site.index, ++rank);
+    if (site.is_void) void_is_site.at(site.index) = true;
+  }
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (!void_is_site[i]) add(true, i, 0);
+  for (std::size_t i = 0; i < cavities.tunnels.size(); ++i) {
+    const Tunnel& t = cavities.tunnels[i];
+    scene.tunnels.push_back({"tunnel_" + std::to_string(i + 1), ids_of(t.lining_atoms),
+                             {t.bottleneck_center, t.bottleneck_radius}});
+  }
+  return scene;
+}
+
+std::string id_ranges(const std::vector<std::size_t>& ids, const std::string& join, const std::string& dash) {
+  std::string out;
+  for (std::size_t k = 0; k < ids.size();) {
+    std::size_t end = k + 1;
+    while (end < ids.size() && ids[end] == ids[end - 1] + 1) ++end;
+    if (!out.empty()) out += join;
+    out += std::to_string(ids[k]);
+    if (end - k > 1) out += dash + std::to_string(ids[end - 1]);
+    k = end;
+  }
+  return out;
+}
+
+}  // namespace molecule

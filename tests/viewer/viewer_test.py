@@ -1,0 +1,264 @@
+#!/usr/bin/python3
+"""The viewer scripts of `alphapocket pockets` in the real viewer: PyMOL
+2.5 headless (`pymol -cq`, Debian's pymol), ChimeraX's script through
+check_cxc.py (ChimeraX is not in Debian). One case per CTest test:
+
+    viewer_test.py ALPHAPOCKET REPO_ROOT CASE
+
+  pymol_1a26A  OUTDIR moved elsewhere and opened from a third directory:
+               no error or warning, the named objects hold what report.json
+               says, the ligand is there, sites after the 12th are
+               disabled, and a rendered PNG shows the top site's colour
+               (which disabling the top site's objects takes away).
+  pymol_3stdA  the same where the best site is a buried void.
+  injection    a file name and chain/residue/atom names made of newlines,
+               quotes, ';', '#', backslashes and non-ASCII: PyMOL runs none
+               of it (a `system touch PWNED` in the name stays text), the
+               ChimeraX script is only our commands, pockets.pdb, CSV,
+               JSON and structure.cif stay well-formed.
+  cxc_1a26A    check_cxc.py accepts pockets.cxc and refuses broken ones.
+"""
+import csv
+import io
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import gemmi
+from PIL import Image
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import check_cxc  # noqa: E402
+
+EXE, ROOT, CASE = sys.argv[1:4]
+# Debian's pymol runs `python3` from PATH: make it Debian's own.
+ENV = dict(os.environ, PATH="/usr/bin:/bin:" + os.environ.get("PATH", ""))
+PYMOL = shutil.which("pymol", path=ENV["PATH"])
+
+
+def fail(message):
+    print(f"FAIL [{CASE}]: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def pockets(structure, outdir, *args):
+    run = subprocess.run([EXE, "-q", "pockets", structure, "-o", outdir, *args], capture_output=True)
+    if run.returncode != 0:
+        fail(f"alphapocket pockets failed: {run.stderr!r}")
+    return run
+
+
+def pymol(cwd, pml, extra):
+    """Runs `pymol -cq PML EXTRA.py` in cwd; fails on any error or warning
+    PyMOL prints. Returns what EXTRA.py printed as JSON on its last line."""
+    if PYMOL is None:
+        fail("pymol is not installed (Debian: pymol, in deps/test.txt)")
+    script = os.path.join(cwd, "check_view.py")
+    with open(script, "w") as f:
+        f.write(extra)
+    run = subprocess.run([PYMOL, "-cq", pml, script], cwd=cwd, env=ENV, capture_output=True, text=True,
+                         errors="replace", timeout=600)
+    output = run.stdout + run.stderr
+    # PyMOL echoes the script's commands ("PyMOL>..."); everything else it
+    # prints must be free of complaints.
+    said = [line for line in output.splitlines() if not line.startswith("PyMOL>")]
+    bad = [line for line in said if re.search(r"error|warning|traceback|unknown|invalid|not found|exception",
+                                              line, re.I)]
+    if run.returncode != 0 or bad:
+        fail(f"PyMOL complained (exit {run.returncode}): {bad[:5]}\n{output[-3000:]}")
+    results = [line for line in said if line.startswith("RESULT ")]
+    if not results:
+        fail(f"the check script printed nothing\n{output[-3000:]}")
+    return json.loads(results[-1][len("RESULT "):])
+
+
+CHECKS = r"""
+import json
+from pymol import cmd
+names = cmd.get_names("all")
+enabled = cmd.get_names("all", enabled_only=1)
+counts = {n: cmd.count_atoms(n) for n in names if cmd.get_type(n) in ("object:molecule", "selection")}
+cmd.set("ray_opaque_background", 1)
+cmd.png("view.png", width=320, height=240, ray=1)
+top = "%(top)s"
+cmd.disable(top + "_space")
+cmd.disable(top + "_center")
+cmd.color("grey80", "byres " + top)
+cmd.png("without_top.png", width=320, height=240, ray=1)
+print("RESULT " + json.dumps({"names": names, "enabled": enabled, "counts": counts}))
+"""
+
+
+def near_color_pixels(png, rgb):
+    """Pixels of rgb's hue (within 12 degrees) and at least half its
+    saturation: the site's colour under any shading, and seen through the
+    transparent grey surface."""
+    import colorsys
+    hue, saturation, _ = colorsys.rgb_to_hsv(*(c / 255 for c in rgb))
+    image = Image.open(png).convert("RGB")
+    count = 0
+    for p in image.getdata():
+        h, s, v = colorsys.rgb_to_hsv(*(c / 255 for c in p))
+        if s >= saturation / 2 and v > 0.15 and min(abs(h - hue), 1 - abs(h - hue)) < 12 / 360:
+            count += 1
+    return count, image.size[0] * image.size[1]
+
+
+def top_color(pml, name):
+    m = re.search(r"^set_color ap_" + name + r", \[(\d+), (\d+), (\d+)\]$", pml, re.M)
+    if not m:
+        fail(f"no colour for {name}")
+    return tuple(int(x) for x in m.groups())
+
+
+def view_case(structure, object_name):
+    tmp = tempfile.mkdtemp()
+    try:
+        pockets(structure, os.path.join(tmp, "out"))
+        # Moved (as a zip would carry it), opened from a third directory.
+        os.makedirs(os.path.join(tmp, "elsewhere"))
+        moved = os.path.join(tmp, "elsewhere", "shared_results")
+        shutil.move(os.path.join(tmp, "out"), moved)
+        os.makedirs(os.path.join(tmp, "cwd"))
+        with open(os.path.join(moved, "report.json")) as f:
+            report = json.load(f)
+        with open(os.path.join(moved, "pockets.pml")) as f:
+            pml = f.read()
+        sites = report["sites"]
+        top = f"{sites[0]['kind']}_{sites[0]['cavity_rank']}"
+        got = pymol(os.path.join(tmp, "cwd"), os.path.join("..", "elsewhere", "shared_results", "pockets.pml"),
+                    CHECKS % {"top": top})
+        names, enabled, counts = set(got["names"]), set(got["enabled"]), got["counts"]
+        expected_atoms = report["input"]["atoms_kept"] + sum(
+            len(g["atoms"]) if "atoms" in g else 0 for g in [])  # ligands checked below
+        if counts.get(object_name, 0) < expected_atoms:
+            fail(f"object {object_name}: {counts.get(object_name)} atoms, expected >= {expected_atoms}")
+        ligand_atoms = counts.get(object_name, 0) - report["input"]["atoms_kept"]
+        if report["input"]["hetero_groups"] > 0 and (ligand_atoms <= 0 or counts.get("ligands") != ligand_atoms):
+            fail(f"ligands: {counts.get('ligands')} atoms, {ligand_atoms} beyond the atoms searched")
+        for kind in ("pockets", "voids"):
+            for cavity in report[kind]:
+                name = f"{kind[:-1]}_{cavity['rank']}"
+                for part in (name, name + "_center"):
+                    if part not in names:
+                        fail(f"no object {part}")
+                if counts[name] != len(cavity["lining_atoms"]):
+                    fail(f"{name}: {counts[name]} atoms, report.json has {len(cavity['lining_atoms'])}")
+        for site in sites:
+            name = f"{site['kind']}_{site['cavity_rank']}_center"
+            if (name in enabled) != (site["rank"] <= 12):
+                fail(f"{name}: enabled is {name in enabled} at site rank {site['rank']}")
+        for tunnel in report["tunnels"]:
+            if f"tunnel_{tunnel['rank']}_bottleneck" not in names:
+                fail(f"no tunnel_{tunnel['rank']}_bottleneck")
+        keep = os.environ.get("ALPHAPOCKET_KEEP_PNG")  # to look at them
+        if keep:
+            for png in ("view.png", "without_top.png"):
+                shutil.copy(os.path.join(tmp, "cwd", png), os.path.join(keep, f"{object_name}_{png}"))
+        color = top_color(pml, top)
+        with_top, pixels = near_color_pixels(os.path.join(tmp, "cwd", "view.png"), color)
+        without_top, _ = near_color_pixels(os.path.join(tmp, "cwd", "without_top.png"), color)
+        print(f"{top}: colour {color}, {with_top} of {pixels} pixels; {without_top} with it disabled")
+        if with_top < 0.01 * pixels or without_top > with_top / 4:
+            fail(f"the top site's colour is not what shows: {with_top} pixels, {without_top} without it")
+    finally:
+        shutil.rmtree(tmp)
+
+
+EVIL = "x\";'\\#;\u00e9\u4e2d"   # quotes, ';', '#', backslash, non-ASCII
+
+
+def injection_case():
+    tmp = tempfile.mkdtemp()
+    try:
+        st = gemmi.read_structure(os.path.join(ROOT, "tests", "data", "3stdA.pdb"))
+        st.setup_entities()
+        for chain in st[0]:
+            chain.name = "A;" + EVIL[:2]
+            for k, res in enumerate(chain):
+                if k % 7 == 0:
+                    res.name = "R;'"
+                for atom in res:
+                    if k % 5 == 0:
+                        atom.name = "C\"" + EVIL[3:5]
+        doc = st.make_mmcif_document()
+        # A directory in the path lets the name hold a '/' after a newline:
+        # PyMOL reads "/..." as a line of Python.
+        folder = os.path.join(tmp, "x\nsystem touch PWNED\n")
+        os.makedirs(folder)
+        name = os.path.join(folder, "cmd.system('touch PWNED')\n" + EVIL + ".cif")
+        doc.write_file(name)
+        out = os.path.join(tmp, "out")
+        pockets(name, out)
+        run = subprocess.run([EXE, "-q", "pockets", name, "-o", os.path.join(tmp, "out2"), "--json"],
+                             capture_output=True)
+        report = json.loads(run.stdout.decode("utf-8"))
+        with open(os.path.join(out, "report.json"), encoding="utf-8") as f:
+            if json.load(f) != report:
+                fail("report.json differs from --json")
+        if report["input"]["file"] != name:
+            fail(f"report.json input.file is {report['input']['file']!r}")
+        pml = open(os.path.join(out, "pockets.pml"), encoding="utf-8", errors="replace").read()
+        if "PWNED" in pml.replace("# alphapocket", "").split("\n", 1)[1]:
+            fail("the name reaches a command line of pockets.pml")
+        pymol(tmp, os.path.join(out, "pockets.pml"), 'print("RESULT " + "{}")\n')
+        for root, dirs, files in os.walk(tmp):
+            if "PWNED" in files:
+                fail("PyMOL ran a command from the file name")
+        cxc = open(os.path.join(out, "pockets.cxc"), encoding="ascii").read()
+        problems = check_cxc.check(cxc)
+        if problems:
+            fail(f"pockets.cxc: {problems[:3]}")
+        pdb = open(os.path.join(out, "pockets.pdb"), "rb").read().decode("ascii")
+        for line in pdb.splitlines():
+            if not re.fullmatch(r"(REMARK   1 [ -~]{0,69}|HETATM[ -~]{74}|END)", line):
+                fail(f"pockets.pdb: not a well-formed record: {line!r}")
+        for table in ("pockets.csv",):
+            rows = list(csv.reader(io.StringIO(open(os.path.join(out, table), encoding="utf-8").read())))
+            if len({len(r) for r in rows}) != 1 or len(rows) != len(report["pockets"]) + 1:
+                fail(f"{table}: rows of different lengths or not one per pocket")
+            if rows[1][-1].split()[0] != report["pockets"][0]["lining_residues"][0]["id"]:
+                fail(f"{table}: residues {rows[1][-1]!r} differ from report.json")
+        cif = gemmi.cif.read(os.path.join(out, "structure.cif"))
+        ids = cif.sole_block().find_loop("_atom_site.id")
+        if len(ids) != report["input"]["atoms_kept"] + 0 and len(ids) < report["input"]["atoms_kept"]:
+            fail(f"structure.cif: {len(ids)} atoms")
+    finally:
+        shutil.rmtree(tmp)
+
+
+def cxc_case():
+    tmp = tempfile.mkdtemp()
+    try:
+        pockets(os.path.join(ROOT, "examples", "data", "1a26A.pdb"), os.path.join(tmp, "out"))
+        cxc = open(os.path.join(tmp, "out", "pockets.cxc"), encoding="ascii").read()
+        problems = check_cxc.check(cxc)
+        if problems:
+            fail(f"pockets.cxc: {problems[:3]}")
+        for needed in ("open structure.cif\n", "marker #2.1 ", "name pocket_1 ", "view pocket_1 | #3.1\n",
+                       "name ligands ", "marker #4.1 "):
+            if needed not in cxc:
+                fail(f"pockets.cxc has no {needed!r}")
+        # The checker bites: a foreign command, a ';' and a name anywhere are refused.
+        for broken in ("open /x/1a26A.pdb\n", "show #1 atoms; system touch PWNED\n", "name pocket_1 /A:42\n",
+                       "# a ; comment\n"):
+            if not check_cxc.check(cxc + broken):
+                fail(f"check_cxc accepts {broken!r}")
+    finally:
+        shutil.rmtree(tmp)
+
+
+if CASE == "pymol_1a26A":
+    view_case(os.path.join(ROOT, "examples", "data", "1a26A.pdb"), "1a26A")
+elif CASE == "pymol_3stdA":
+    view_case(os.path.join(ROOT, "tests", "data", "3stdA.pdb"), "3stdA")
+elif CASE == "injection":
+    injection_case()
+elif CASE == "cxc_1a26A":
+    cxc_case()
+else:
+    fail("unknown case")
