@@ -221,8 +221,8 @@ def injection_case():
             rows = list(csv.reader(io.StringIO(open(os.path.join(out, table), encoding="utf-8").read())))
             if len({len(r) for r in rows}) != 1 or len(rows) != len(report["pockets"]) + 1:
                 fail(f"{table}: rows of different lengths or not one per pocket")
-            if rows[1][-1].split()[0] != report["pockets"][0]["lining_residues"][0]["id"]:
-                fail(f"{table}: residues {rows[1][-1]!r} differ from report.json")
+            if rows[1][rows[0].index("residues")].split()[0] != report["pockets"][0]["lining_residues"][0]["id"]:
+                fail(f"{table}: residues {rows[1]!r} differ from report.json")
         cif = gemmi.cif.read(os.path.join(out, "structure.cif"))
         ids = cif.sole_block().find_loop("_atom_site.id")
         if len(ids) != report["input"]["atoms_kept"] + 0 and len(ids) < report["input"]["atoms_kept"]:
