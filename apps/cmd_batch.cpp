@@ -270,7 +270,7 @@ Subcommand add_batch_command(CLI::App& app) {
       ->required();
   sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
-  sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes")
+  sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes,tunnels")
       ->capture_default_str();
   sub->add_option("--max-atoms", opt->max_atoms, "Structures with more atoms (after the selection) are skipped")
       ->capture_default_str()

@@ -113,6 +113,25 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
   }
 }
 
+// One line per tunnel start (its widest tunnel) and for the widest pore.
+void print_paths(const molecule::Analysis& a) {
+  const auto line = [&](const std::string& what, const molecule::TunnelPath& p) {
+    std::printf("%s: bottleneck radius %.2f A, length %.1f A, lined by %s\n", what.c_str(), p.bottleneck_radius,
+                p.length, residue_list(a.structure.atoms, p.lining_atoms, kSummaryWidth - 40).c_str());
+  };
+  std::size_t last_start = std::size_t(-1);
+  bool pore = false;
+  for (const molecule::TunnelPath& p : a.paths) {
+    if (!p.pore && p.start != last_start) {
+      last_start = p.start;
+      line("tunnel from " + a.tunnel_starts[p.start], p);
+    } else if (p.pore && !pore) {
+      pore = true;
+      line("widest pore", p);
+    }
+  }
+}
+
 int run_pockets(const PocketsOptions& opt) {
   Stopwatch total_time;
   const std::string& file = opt.input.file;
@@ -140,6 +159,7 @@ int run_pockets(const PocketsOptions& opt) {
     std::puts(analysis.report.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print_summary(opt, outdir, analysis.structure, analysis.search.cavities);
+    print_paths(analysis);
   }
   flush_stdout();
   return 0;
@@ -154,7 +174,8 @@ Subcommand add_pockets_command(CLI::App& app) {
   sub->footer(
       "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
       "ProtOr radii. OUTDIR gets "
-      "report.json, pockets.csv, pockets.pml, pockets.pdb and meshes/; see README.md for their contents.");
+      "report.json, pockets.csv, pockets.pml, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb and meshes/; "
+      "see README.md for their contents.");
   add_input_options(*sub, opt->input);
   // Only structure files: atoms need radii and residues.
   sub->remove_option(sub->get_option("--weighted"));

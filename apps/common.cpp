@@ -82,6 +82,17 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
   sub.add_option("--mesh", options.mesh_format, "Format of the mesh files")
       ->capture_default_str()
       ->check(CLI::IsMember({"ply", "obj", "off", "stl"}));
+  sub.add_option("--radii", options.radii_file,
+                 "Radius file: RESIDUE ATOM RADIUS lines with ? and * wildcards, element SYMBOL RADIUS, or HOLE's "
+                 ".rad format (VDWR records)");
+  sub.add_option("--tunnels-from", options.tunnels_from,
+                 "Where tunnels start: auto (the top 3 sites), none, a site rank, residues A:45,A:67, or x,y,z")
+      ->capture_default_str();
+  sub.add_option("--tunnel-probe", options.tunnels.probe, "Narrowest probe a tunnel or pore lets through, A")
+      ->capture_default_str()
+      ->check(finite_number())
+      ->check(CLI::PositiveNumber);
+  sub.add_flag("--pores", options.tunnels.pores, "Also find pores: paths across the molecule from solvent to solvent");
 }
 
 CLI::Validator finite_number() {
@@ -113,6 +124,10 @@ void log_analysis(const molecule::Analysis& a, spdlog::level::level_enum level) 
               a.search.complex_seconds, a.structure.atoms.size(), a.search.triangulation->num_finite_cells());
   spdlog::log(level, "cavities: {:.3f} s, {} pockets, {} voids, {} tunnels", a.search.cavities_seconds,
               c.pockets.size(), c.voids.size(), c.tunnels.size());
+  if (a.radius_fallbacks > 0)
+    spdlog::warn("{}: {} atoms matched no rule: built-in element radii", a.options.radii_file, a.radius_fallbacks);
+  spdlog::log(level, "tunnels and pores: {:.3f} s, {} paths from {} starts", a.tunnels_seconds, a.paths.size(),
+              a.tunnel_starts.size());
 }
 
 PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms) {

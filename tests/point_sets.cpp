@@ -1,5 +1,6 @@
 #include "point_sets.hpp"
 
+#include <cmath>
 #include <random>
 
 namespace testing {
@@ -35,6 +36,29 @@ std::vector<double> random_weights(std::size_t n, std::uint64_t seed, double lo,
   std::vector<double> w(n);
   for (auto& x : w) x = u(rng);
   return w;
+}
+
+std::vector<alpha::Vec3> ring_points(int n, double R, double h, double phase) {
+  constexpr double kPi = 3.14159265358979323846;
+  std::vector<alpha::Vec3> pts;
+  for (int i = 0; i < n; ++i) {
+    const double a = phase + 2 * kPi * i / n;
+    pts.push_back({R * std::cos(a), R * std::sin(a), h});
+  }
+  return pts;
+}
+
+std::vector<alpha::Vec3> cage_points(int n, double S, double cap, int window) {
+  constexpr double kPi = 3.14159265358979323846;
+  std::vector<alpha::Vec3> pts;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1 - (2 * i + 1.0) / n, phi = i * kPi * (3 - std::sqrt(5.0));
+    if (z > std::cos(cap) - 0.02) continue;
+    const double rho = std::sqrt(1 - z * z);
+    pts.push_back({S * rho * std::cos(phi), S * rho * std::sin(phi), S * z});
+  }
+  for (const alpha::Vec3& p : ring_points(window, S * std::sin(cap), S * std::cos(cap))) pts.push_back(p);
+  return pts;
 }
 
 }  // namespace testing

@@ -15,4 +15,12 @@ std::vector<alpha::Vec3> sphere_points(int r2);
 // Random weights in [lo, hi).
 std::vector<double> random_weights(std::size_t n, std::uint64_t seed, double lo, double hi);
 
+// n points on the circle of radius R about the z axis in the plane z = h,
+// the first at angle `phase`.
+std::vector<alpha::Vec3> ring_points(int n, double R, double h, double phase = 0);
+// A closed cage: n Fibonacci points on the sphere of radius S about the
+// origin, but for the cap within `cap` radians of +z, whose rim gets a ring
+// of `window` points (a window of radius S sin(cap) at height S cos(cap)).
+std::vector<alpha::Vec3> cage_points(int n, double S, double cap, int window);
+
 }  // namespace testing

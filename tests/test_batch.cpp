@@ -192,7 +192,8 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   CHECK(r.key != molecule::batch_key({{"probe", 1.5}}, "test"));
   CHECK(r.key != molecule::batch_key({{"probe", 1.4}}, "other"));
   CHECK(back.rows["sites"].size() == a.search.cavities.sites.size());
-  CHECK(back.rows["tunnels"].size() == a.search.cavities.tunnels.size());
+  CHECK(back.rows["tunnels"].size() == a.report["tunnels"].size());  // cycles, tunnels and pores
+  CHECK(a.report["tunnels"].size() == a.search.cavities.tunnels.size() + a.paths.size());
   CHECK(back.rows["structure"][2] == a.structure.atoms.size());
   const auto& first = back.rows["sites"][0];
   CHECK(first[3] == a.report["pockets"][0]["score"]);  // site 1 is pocket 1 here

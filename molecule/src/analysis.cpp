@@ -1,5 +1,9 @@
 #include "molecule/analysis.hpp"
 
+#include "molecule/radius_file.hpp"
+#include "molecule/tunnel_start.hpp"
+
+#include <chrono>
 #include <new>
 #include <utility>
 
@@ -23,6 +27,11 @@ PocketRun Analysis::run() const {
   r.search = &search;
   r.mesh_format = options.outputs.meshes ? options.mesh_format : "";
   r.min_plddt = options.structure.min_plddt;
+  if (!options.radii_file.empty()) r.radii = options.radii_file;
+  r.paths = &paths;
+  r.tunnel_starts = tunnel_starts;
+  r.tunnels_from = options.tunnels_from;
+  r.tunnel_options = options.tunnels;
   return r;
 }
 
@@ -35,6 +44,13 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
   a.options = options;
   try {
     a.structure = read();
+    if (!options.radii_file.empty()) {
+      try {
+        a.radius_fallbacks = apply_radius_file(read_radius_file(options.radii_file), a.structure.atoms);
+      } catch (const alpha::Error& e) {
+        throw AnalysisError(FailureKind::BadInput, e.what());  // names the radius file
+      }
+    }
     const std::size_t atoms = a.structure.atoms.size();
     if (options.max_atoms > 0 && atoms > options.max_atoms)
       throw AnalysisError(FailureKind::LimitExceeded, file + ": " + std::to_string(atoms) +
@@ -46,6 +62,18 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     } catch (const alpha::Error& e) {
       throw AnalysisError(FailureKind::BadInput, file + ": " + e.what());  // e.g. all atoms in one plane
     }
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<TunnelStart> starts;
+    try {
+      starts = tunnel_starts(options.tunnels_from, a.structure, a.search.cavities);
+    } catch (const alpha::Error& e) {
+      throw AnalysisError(FailureKind::BadInput, file + ": " + e.what());
+    }
+    for (const TunnelStart& s : starts) a.tunnel_starts.push_back(s.label);
+    std::vector<double> radii;
+    for (const Atom& atom : a.structure.atoms) radii.push_back(atom.radius);
+    a.paths = find_tunnel_paths(*a.search.complex, radii, starts, options.tunnels);
+    a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     a.report = pocket_report(a.run());
   } catch (const AnalysisError&) {
     throw;

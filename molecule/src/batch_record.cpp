@@ -46,8 +46,9 @@ json report_rows(const json& report) {
   json tunnels = json::array();
   for (const json& t : report.at("tunnels")) {
     const json& center = t.at("bottleneck_center");
-    tunnels.push_back({t.at("rank"), t.at("bottleneck_radius"), center[0], center[1], center[2],
-                       t.at("birth_alpha_sq"), t.at("death_alpha_sq"), residue_ids(t.at("lining_residues"))});
+    tunnels.push_back({t.at("rank"), t.at("kind"), t.at("bottleneck_radius"), center[0], center[1], center[2],
+                       t.at("length"), value_or_null(t, "birth_alpha_sq"), value_or_null(t, "death_alpha_sq"),
+                       residue_ids(t.at("lining_residues"))});
   }
   return {{"structure", std::move(structure)}, {"sites", std::move(sites)}, {"tunnels", std::move(tunnels)}};
 }

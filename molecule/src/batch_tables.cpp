@@ -45,8 +45,8 @@ const Table kSites{"sites",
                     {"lining_residues", I}, {"residues", T}},
                    1};
 const Table kTunnels{"tunnels",
-                     {{"structure_id", T}, {"tunnel_rank", I}, {"bottleneck_radius", R}, {"center_x", R},
-                      {"center_y", R}, {"center_z", R}, {"birth_alpha_sq", R}, {"death_alpha_sq", R},
+                     {{"structure_id", T}, {"tunnel_rank", I}, {"kind", T}, {"bottleneck_radius", R}, {"center_x", R},
+                      {"center_y", R}, {"center_z", R}, {"length", R}, {"birth_alpha_sq", R}, {"death_alpha_sq", R},
                       {"residues", T}},
                      1};
 const Table kFailures{"failures", {{"id", T}, {"path", T}, {"category", T}, {"message", T}}, 4};

@@ -12,6 +12,7 @@
 #include "alpha/discrete_flow.hpp"
 #include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
+#include "alpha/nearest_ball.hpp"
 #include "alpha/persistent_basins.hpp"
 #include "alpha/point_grid.hpp"
 #include "molecule/atom_balls.hpp"
@@ -144,8 +145,7 @@ public:
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
         cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)),
-        atoms_(std::max(options.burial_radius, 1.0)),
-        max_radius_(radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end())) {
+        atoms_(std::max(options.burial_radius, 1.0)), nearest_(t_.points(), radii, options.probe) {
     for (Index i = 0; i < t_.num_points(); ++i) atoms_.add(t_.point(i), i);
     atoms_.finish();
   }
@@ -202,24 +202,13 @@ private:
   // All atoms, bucketed: the burial count and the clearance look only near
   // the cavity (a scan of all atoms per cavity is slow on large assemblies).
   alpha::PointGrid atoms_;
-  double max_radius_;
+  alpha::NearestBall nearest_;
 
   bool empty(Index f) const { return ac_.triangle_interval(f).entry >= level_; }
 
   // Radius of the largest probe centred at x: its distance to the nearest
-  // atom's van der Waals sphere; infinite for a point at infinity (the
-  // orthocentre of a flat cell). Searched in a cube of half-side h about
-  // x, doubling h until the nearest sphere found is nearer than any atom
-  // beyond the cube can be (farther than h from x, so beyond
-  // h - max_radius_), or all atoms are seen.
-  double clearance(const Vec3& x) const {
-    double r = std::numeric_limits<double>::infinity();
-    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return r;
-    for (double h = std::max(options_.probe + 2 * max_radius_, 1.0);; h *= 2) {  // > 0: zero radii and probe
-      atoms_.visit(x, h, [&](Index i) { r = std::min(r, std::sqrt(dot(x - t_.point(i), x - t_.point(i))) - radii_[i]); });
-      if (r < (h - max_radius_) * (1 - 1e-9) || atoms_.covers_all(x, h)) return r;
-    }
-  }
+  // atom's van der Waals sphere (infinite for a point at infinity).
+  double clearance(const Vec3& x) const { return nearest_.distance(x); }
 
   // The empty space of a region's cells (sorted), each computed once for
   // the size rule's masses and the measures of the region's cavities.

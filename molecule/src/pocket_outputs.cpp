@@ -20,7 +20,7 @@ namespace molecule {
 namespace fs = std::filesystem;
 
 OutputSelection parse_output_selection(const std::string& list) {
-  OutputSelection s{false, false, false, false, false};
+  OutputSelection s{false, false, false, false, false, false};
   std::size_t begin = 0;
   while (begin <= list.size()) {
     const std::size_t end = std::min(list.find(',', begin), list.size());
@@ -30,8 +30,9 @@ OutputSelection parse_output_selection(const std::string& list) {
                  : item == "pml"  ? &s.pml
                  : item == "pdb"  ? &s.pdb
                  : item == "meshes" ? &s.meshes
+                 : item == "tunnels" ? &s.tunnels
                                     : nullptr;
-    if (!flag) alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes)");
+    if (!flag) alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels)");
     *flag = true;
     begin = end + 1;
   }
@@ -97,6 +98,16 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
                           " pseudo-atoms left out, beyond the PDB columns' range (report.json has every cavity)");
     files.emplace_back("pockets.pdb", std::move(pdb.text));
   }
+  if (selection_.tunnels && run.paths) {
+    files.emplace_back("tunnels.csv", tunnels_csv(run));
+    files.emplace_back("tunnel_profiles.csv", tunnel_profiles_csv(run));
+    PocketPdb tunnels = tunnel_pdb(*run.paths, cavities.tunnels.size() + 1,
+                                   "alphapocket " + run.version + " tunnels of " + run.file);
+    if (tunnels.left_out > 0)
+      warnings_.push_back("tunnels.pdb: " + std::to_string(tunnels.left_out) +
+                          " pseudo-atoms left out, beyond the PDB columns' range");
+    files.emplace_back("tunnels.pdb", std::move(tunnels.text));
+  }
   if (selection_.meshes && !run.mesh_format.empty()) {
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
       files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh).bytes);
@@ -130,7 +141,8 @@ void remove_ours(const fs::path& dir, const std::vector<std::string>& written, b
   const auto is_written = [&](const std::string& name) {
     return std::find(written.begin(), written.end(), name) != written.end();
   };
-  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif", "pockets.pdb"}) {
+  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif", "pockets.pdb",
+                           "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"}) {
     std::error_code rm;
     if (!is_written(name)) fs::remove(dir / name, rm);
   }

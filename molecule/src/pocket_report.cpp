@@ -7,7 +7,6 @@
 #include <tuple>
 
 #include "alpha/error.hpp"
-#include "molecule/radii.hpp"
 
 namespace molecule {
 namespace {
@@ -121,18 +120,57 @@ json site_list(const PocketRun& run) {
   return out;
 }
 
+std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
+
+json profile_of(const TunnelPath& p) {
+  json out = json::array();
+  for (const ProfilePoint& q : p.profile) out.push_back({length(q.x.x), length(q.x.y), length(q.x.z), length(q.radius)});
+  return out;
+}
+
+// Cycles first (rank = their tunnel_N in pockets.pml and pockets.pdb), then
+// the tunnels and pores.
 json tunnel_list(const PocketRun& run) {
   const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::size_t cycles = run.search->cavities.tunnels.size();
   json out = json::array();
   std::size_t rank = 0;
-  for (const Tunnel& t : run.search->cavities.tunnels)
+  for (const Tunnel& t : run.search->cavities.tunnels) {
+    json entry = {{"rank", ++rank},
+                  {"kind", "cycle"},
+                  {"birth_alpha_sq", t.birth_alpha_sq},
+                  {"death_alpha_sq", t.death_alpha_sq},
+                  {"bottleneck_radius", length(t.bottleneck_radius)},
+                  {"bottleneck_center", point(t.bottleneck_center)},
+                  {"length", nullptr},
+                  {"path", nullptr},
+                  {"profile", json::array()},
+                  {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
+                  {"lining_residues", lining_residues(atoms, t.lining_atoms)}};
+    const std::size_t through = path_through(run, t);
+    if (through != std::size_t(-1)) {
+      entry["length"] = length((*run.paths)[through].length);
+      entry["path"] = cycles + through + 1;
+      entry["profile"] = profile_of((*run.paths)[through]);
+    }
+    out.push_back(std::move(entry));
+  }
+  for (std::size_t i = 0; i < num_paths(run); ++i) {
+    const TunnelPath& p = (*run.paths)[i];
+    const auto finite = [](double x) { return std::isfinite(x) ? json(length(x)) : json(nullptr); };
     out.push_back({{"rank", ++rank},
-                   {"birth_alpha_sq", t.birth_alpha_sq},
-                   {"death_alpha_sq", t.death_alpha_sq},
-                   {"bottleneck_radius", length(t.bottleneck_radius)},
-                   {"bottleneck_center", point(t.bottleneck_center)},
-                   {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
-                   {"lining_residues", lining_residues(atoms, t.lining_atoms)}});
+                   {"kind", p.pore ? "pore" : "tunnel"},
+                   {"start", p.pore ? json(nullptr) : json(run.tunnel_starts.at(p.start))},
+                   {"bottleneck_radius", length(p.bottleneck_radius)},
+                   {"bottleneck_center", point(p.bottleneck)},
+                   {"length", length(p.length)},
+                   {"curvature", finite(p.curvature)},
+                   {"cost", score(p.cost)},
+                   {"start_point", point(p.start_point)},
+                   {"mouth", point(p.mouth)},
+                   {"profile", profile_of(p)},
+                   {"lining_residues", lining_residues(atoms, p.lining_atoms)}});
+  }
   return out;
 }
 
@@ -211,7 +249,10 @@ json pocket_report(const PocketRun& run) {
       {"split_volume", run.options.split_volume},
       {"split_min_volume", run.options.split_min_volume},
       {"min_plddt", run.min_plddt},
-      {"radii", std::string(kRadiusTable)},
+      {"radii", run.radii},
+      {"tunnels_from", run.tunnels_from},
+      {"tunnel_probe", run.tunnel_options.probe},
+      {"pores", run.tunnel_options.pores},
       {"alpha_sq", 0.0},
   };
   json molecule = {{"atoms", run.structure->atoms.size()},
@@ -221,7 +262,8 @@ json pocket_report(const PocketRun& run) {
                    {"voids", run.search->cavities.voids.size()},
                    {"sites", run.search->cavities.sites.size()},
                    {"tunnels", run.search->cavities.tunnels.size()},
-                   {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))}};
+                   {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))},
+                   {"tunnel_paths", num_paths(run)}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
   return {
       {"alphapocket", run.version},
@@ -260,6 +302,57 @@ std::string pockets_csv(const PocketRun& run) {
     out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + ',' +
            (plddt.is_null() ? std::string() : plddt.dump()) + '\n';
   }
+  return out;
+}
+
+}  // namespace molecule
+
+namespace molecule {
+
+std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
+  for (std::size_t i = 0; i < num_paths(run); ++i) {
+    const TunnelPath& p = (*run.paths)[i];
+    if (std::find(p.triangles.begin(), p.triangles.end(), cycle.bottleneck_triangle) != p.triangles.end()) return i;
+    // Ties: another triangle with the same narrowest point (a ring of
+    // cocircular atoms, all triangles of its disc centred alike).
+    for (const alpha::Vec3& x : p.centreline)
+      if (norm(x - cycle.bottleneck_center) < 1e-9) return i;
+  }
+  return std::size_t(-1);
+}
+
+std::string tunnels_csv(const PocketRun& run) {
+  std::string out =
+      "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
+      "lining_residues,residues\n";
+  const json report = tunnel_list(run);
+  for (const json& t : report) {
+    const auto num = [&](const json& x) { return x.is_null() ? std::string() : x.dump(); };
+    std::string names;
+    for (const json& r : t["lining_residues"]) {
+      if (!names.empty()) names += ' ';
+      names += r["id"].get<std::string>();
+    }
+    out += num(t["rank"]) + ',' + t["kind"].get<std::string>() + ',' +
+           csv_field(t.contains("start") && !t["start"].is_null() ? t["start"].get<std::string>() : "") + ',' +
+           num(t["bottleneck_radius"]);
+    for (const json& x : t["bottleneck_center"]) out += ',' + num(x);
+    out += ',' + num(t["length"]) + ',' + (t.contains("curvature") ? num(t["curvature"]) : "") + ',' +
+           (t.contains("cost") ? num(t["cost"]) : "") + ',' + std::to_string(t["lining_residues"].size()) + ',' +
+           csv_field(names) + '\n';
+  }
+  return out;
+}
+
+std::string tunnel_profiles_csv(const PocketRun& run) {
+  std::string out = "tunnel,distance,x,y,z,radius\n";
+  const std::size_t cycles = run.search->cavities.tunnels.size();
+  for (std::size_t i = 0; i < num_paths(run); ++i)
+    for (const ProfilePoint& q : (*run.paths)[i].profile) {
+      out += std::to_string(cycles + i + 1);
+      for (const double x : {q.distance, q.x.x, q.x.y, q.x.z, q.radius}) out += ',' + csv_number(length(x));
+      out += '\n';
+    }
   return out;
 }
 

@@ -152,7 +152,7 @@ def view_case(structure, object_name):
             name = f"{site['kind']}_{site['cavity_rank']}_center"
             if (name in enabled) != (site["rank"] <= 12):
                 fail(f"{name}: enabled is {name in enabled} at site rank {site['rank']}")
-        for tunnel in report["tunnels"]:
+        for tunnel in (t for t in report["tunnels"] if t["kind"] == "cycle"):  # paths: tunnels.pdb
             if f"tunnel_{tunnel['rank']}_bottleneck" not in names:
                 fail(f"no tunnel_{tunnel['rank']}_bottleneck")
         keep = os.environ.get("ALPHAPOCKET_KEEP_PNG")  # to look at them

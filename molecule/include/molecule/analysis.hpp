@@ -20,6 +20,7 @@
 #include "molecule/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/tunnel_paths.hpp"
 
 namespace molecule {
 
@@ -49,6 +50,9 @@ struct AnalysisOptions {
   std::size_t max_atoms = 0;
   OutputSelection outputs;
   std::string mesh_format = "ply";  // "ply", "obj", "off", "stl"
+  std::string radii_file;           // --radii (molecule/radius_file.hpp); empty: ProtOr
+  std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
+  TunnelOptions tunnels;            // --tunnel-probe, --pores
 };
 
 // Everything one structure produced; owns all of it.
@@ -57,6 +61,10 @@ struct Analysis {
   AnalysisOptions options;
   Structure structure;
   PocketSearch search;
+  std::vector<std::string> tunnel_starts;  // labels of the starts
+  std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnel_paths)
+  double tunnels_seconds = 0;
+  std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
   nlohmann::ordered_json report;  // pocket_report(run())
 
   // The writers' view of it (borrows from *this: keep *this alive and in place).

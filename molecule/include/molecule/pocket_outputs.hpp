@@ -9,6 +9,8 @@
 //   pockets.pdb   cavity centres and sinks as pseudo-atoms (pocket_pdb)
 //   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
 //                 molecule.<fmt> (molecule_mesh)
+//   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv),
+//   tunnels.pdb   the tunnels and pores (tunnel_pdb)
 //
 // Which of them are written (OutputSelection: all by default, batch
 // writes only the report); files of these names that this run does not
@@ -31,9 +33,10 @@ namespace molecule {
 struct OutputSelection {
   bool report = true, csv = true, pdb = true, meshes = true;
   bool pml = true;  // the viewer scripts: pockets.pml, pockets.cxc and structure.cif
+  bool tunnels = true;  // tunnels.csv, tunnel_profiles.csv, tunnels.pdb
 };
 
-// "report,csv,pml,pdb,meshes" (any subset, any order) -> a selection;
+// "report,csv,pml,pdb,meshes,tunnels" (any subset, any order) -> a selection;
 // throws alpha::Error naming an unknown item.
 OutputSelection parse_output_selection(const std::string& list);
 

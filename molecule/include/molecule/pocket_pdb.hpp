@@ -18,6 +18,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/tunnel_paths.hpp"
 
 namespace molecule {
 
@@ -42,5 +43,11 @@ std::vector<SinkSphere> sink_spheres(const alpha::AlphaComplex& ac, const Cavity
 // The file; `title` goes into the first REMARK (made printable ASCII: a
 // newline in a file name cannot start a record).
 PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
+
+// tunnels.pdb: one pseudo-atom TUN per profile point of each path (residue
+// TUN, chain T for tunnels and P for pores, residue number = first_rank +
+// its index: its rank in report.json), B-factor = the radius there (the
+// HOLE and CAVER convention, read by ChimeraX, VMD and PyMOL).
+PocketPdb tunnel_pdb(const std::vector<TunnelPath>& paths, std::size_t first_rank, const std::string& title);
 
 }  // namespace molecule

@@ -16,7 +16,9 @@
 #include "alpha/geometry.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/pocket_search.hpp"
+#include "molecule/radii.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/tunnel_paths.hpp"
 
 namespace molecule {
 
@@ -30,6 +32,12 @@ struct PocketRun {
   const PocketSearch* search = nullptr;
   std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
   double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
+  std::string radii = std::string(kRadiusTable);  // the radius table, or the --radii file
+  // Tunnels and pores (find_tunnel_paths); null: none computed.
+  const std::vector<TunnelPath>* paths = nullptr;
+  std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
+  std::string tunnels_from = "auto";
+  TunnelOptions tunnel_options;
 };
 
 // Predicted models: the mean pLDDT (B-factor) of the residues of these
@@ -58,5 +66,14 @@ std::string csv_field(const std::string& s);
 
 nlohmann::ordered_json pocket_report(const PocketRun& run);
 std::string pockets_csv(const PocketRun& run);
+// tunnels.csv (one row per entry of report.json's tunnels) and
+// tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,
+// one row per profile point of each tunnel and pore).
+std::string tunnels_csv(const PocketRun& run);
+std::string tunnel_profiles_csv(const PocketRun& run);
+// The index into *run.paths of the first path that runs through a cycle's
+// bottleneck (crosses its killing triangle, or passes its bottleneck
+// centre), or npos.
+std::size_t path_through(const PocketRun& run, const Tunnel& cycle);
 
 }  // namespace molecule

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# CLI tests of the tunnels and pores of `alphapocket pockets` (--tunnels-from,
+# --tunnel-probe, --pores, --radii) and their files: tunnels.csv,
+# tunnel_profiles.csv, tunnels.pdb. The paths themselves are checked in
+# tests/test_tunnel_paths.cpp. Usage: tunnels.sh ALPHAPOCKET REPO_ROOT CASE
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
+
+grm=$data/channels/1grm_single.pdb
+rad=$data/channels/simple.rad
+
+case "$case_name" in
+  gramicidin_pore)
+    # HOLE's example: one pore, its minimum radius near HOLE's 1.198 A.
+    run pockets "$grm" --radii "$rad" --pores --keep-hetero -o "$tmp/g"
+    expect_success
+    grep -qE '^widest pore: bottleneck radius 1\.[0-9]{2} A' "$tmp/out" || fail "no pore line"
+    [[ $(grep -c ',pore,' "$tmp/g/tunnels.csv") -eq 1 ]] || fail "not one pore in tunnels.csv"
+    head -n 1 "$tmp/g/tunnel_profiles.csv" | grep -qx 'tunnel,distance,x,y,z,radius' || fail "profile header"
+    grep -qF "\"radii\": \"$rad\"" "$tmp/g/report.json" || fail "parameters.radii is not the file"
+    grep -qF '"kind": "pore"' "$tmp/g/report.json" || fail "no pore in report.json"
+    # tunnels.pdb: one TUN atom per profile point, B = the profile's radius.
+    [[ $(grep -c '^HETATM.* TUN TUN P' "$tmp/g/tunnels.pdb") -eq $(($(wc -l <"$tmp/g/tunnel_profiles.csv") - 1)) ]] ||
+      fail "tunnels.pdb and tunnel_profiles.csv differ in length"
+    first_b=$(grep -m1 '^HETATM' "$tmp/g/tunnels.pdb" | cut -c61-66 | tr -d ' ')
+    first_r=$(sed -n 2p "$tmp/g/tunnel_profiles.csv" | cut -d, -f6)
+    [[ $(printf '%.2f' "$first_r") == "$first_b" ]] || fail "B $first_b is not the radius $first_r"
+    ;;
+  tunnels_from)
+    # Every kind of start; a tunnel row names its start.
+    for from in auto 1 A:49,A:105 26.5,10.3,42.0; do
+      run pockets "$pdb" --tunnels-from "$from" -o "$tmp/t"
+      expect_success
+      grep -q ',tunnel,' "$tmp/t/tunnels.csv" || fail "no tunnel from $from"
+    done
+    run pockets "$pdb" --tunnels-from none -o "$tmp/t"
+    expect_success
+    ! grep -q ',tunnel,' "$tmp/t/tunnels.csv" || fail "tunnels with --tunnels-from none"
+    # A wider probe passes fewer ways: no wider bottleneck than it.
+    run pockets "$pdb" --tunnel-probe 1.5 -o "$tmp/t"
+    expect_success
+    while IFS=, read -r _ kind _ b _; do
+      [[ $kind != tunnel ]] || [[ ${b%.*} -ge 1 && $b > 1.499 ]] || fail "bottleneck $b below the probe"
+    done < <(tail -n +2 "$tmp/t/tunnels.csv")
+    ;;
+  bad_options)
+    # (-q: a start that is no site is known only once the sites are.)
+    run -q pockets "$pdb" --tunnels-from 99 -o "$tmp/t"
+    expect_error "$pdb" "there are [0-9]+ sites"
+    [[ ! -e "$tmp/t" ]] || fail "OUTDIR left behind"
+    run -q pockets "$pdb" --tunnels-from B:1 -o "$tmp/t"
+    expect_error "$pdb" "no atom of residue B:1"
+    run -q pockets "$pdb" --tunnels-from x -o "$tmp/t"
+    expect_error "$pdb" "expected auto"
+    printf 'ALA CB 1.8\nALA CA\n' >"$tmp/bad.rad"
+    run -q pockets "$pdb" --radii "$tmp/bad.rad" -o "$tmp/t"
+    expect_error "$tmp/bad.rad: line 2"
+    run -q pockets "$pdb" --radii "$tmp/missing.rad" -o "$tmp/t"
+    expect_error "$tmp/missing.rad"
+    run -q pockets "$pdb" --tunnel-probe 0 -o "$tmp/t"
+    [[ $rc -eq 2 ]] || fail "--tunnel-probe 0: exit $rc, expected 2"
+    ;;
+  *)
+    echo "unknown case $case_name" >&2
+    exit 2
+    ;;
+esac
