@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# Screening throughput: `alphapocket batch -j 2` against fpocket 4.0 run
+# through GNU parallel -j 2, in the same run, on the same structures
+# (default ../shared/data/pockets-train, 173 chains), then the scaling case
+# of one large assembly (54 rotated copies of 1a26A against one copy).
+#
+# Usage: bench/batch_throughput.sh [ALPHAPOCKET] [DIR]
+#   ALPHAPOCKET  default build/apps/alphapocket
+#   DIR          a folder of .pdb files, default ../shared/data/pockets-train
+# Environment: REPS (timed repetitions, default 3), SHARED (default
+# ../shared beside the repository), CACHE (where fpocket is
+# built, outside the repository; default ~/.cache/alphapocket-bench).
+# Needs GNU parallel, GNU time (/usr/bin/time), make, g++, python3-gemmi, python3-scipy.
+#
+# Printed:
+#   - wall-clock seconds of each repetition, both programs alternating, and
+#     the medians; structures/s = structures / median seconds; the ratio.
+#   - peak memory: the largest resident set of one process (GNU time's
+#     "Maximum resident set size": for parallel, its largest fpocket child).
+#     Ours also with -j 1, which is the memory of one worker.
+#   - failures: ours from failures.tsv; fpocket returns 0 even when a file
+#     fails, so its failures are the inputs without an _info.txt.
+#   - scaling: `alphapocket pockets` on 1a26A and on the 54-copy assembly:
+#     seconds (user + system CPU, single-threaded) and peak memory, and the
+#     ratios against the 54x of a linear cost.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+exe=$(realpath "${1:-$root/build/apps/alphapocket}")
+shared=${SHARED:-$root/../shared}
+data=$(realpath "${2:-$shared/data/pockets-train}")
+reps=${REPS:-3}
+cache=${CACHE:-$HOME/.cache/alphapocket-bench}
+peers=$shared/peers
+
+for tool in parallel make g++; do
+  command -v $tool >/dev/null || { echo "$tool not found" >&2; exit 1; }
+done
+[[ -x /usr/bin/time ]] || { echo "/usr/bin/time not found (Debian: apt-get install time)" >&2; exit 1; }
+[[ -x $exe ]] || { echo "$exe: not an executable (build alphapocket first)" >&2; exit 1; }
+
+# fpocket 4.0 as ../shared/peers/README.md builds it, once per cache.
+fpocket=$cache/fpocket-4.0/bin/fpocket
+if [[ ! -x $fpocket ]]; then
+  echo "building fpocket 4.0 into $cache ..." >&2
+  mkdir -p "$cache"
+  rm -rf "$cache/fpocket-4.0"
+  tar xzf "$peers/fpocket-4.0-src.tar.gz" -C "$cache"
+  (cd "$cache/fpocket-4.0" && sed -i 's/ -pg//g' makefile &&
+     make CXX=g++ QCFLAGS="-O2 -ansi -Isrc/qhull/src" >build.log 2>&1) ||
+    { echo "fpocket build failed: $cache/fpocket-4.0/build.log" >&2; exit 1; }
+fi
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+# fpocket writes its results beside its input: it reads copies (ours reads
+# DIR itself, and would find the copies' results).
+mkdir "$scratch/in"
+cp "$data"/*.pdb "$scratch/in/"
+n=$(ls "$scratch/in" | wc -l)
+
+# timed COMMAND...: runs it under GNU time; prints "WALL_S CPU_S MAX_RSS_KB"
+# (CPU: user + system of the process and its children).
+timed() {
+  /usr/bin/time -f '%e %U %S %M' -o "$scratch/time" "$@" >/dev/null 2>"$scratch/stderr" || true
+  awk '{ print $1, $2 + $3, $4 }' "$scratch/time"
+}
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+ours() {  # JOBS: a fresh output directory (a re-run would resume)
+  rm -rf "$scratch/ours"
+  timed "$exe" -q batch "$data" -o "$scratch/ours" -j "$1"
+}
+theirs() {
+  rm -rf "$scratch"/in/*_out
+  timed parallel -j 2 "$fpocket" -f {} ::: "$scratch"/in/*.pdb
+}
+
+echo "$n structures from $data, $reps repetitions, $(nproc) cores"
+printf '%-4s %9s %9s %9s %9s %12s %12s\n' rep ours_s ours_cpu fpocket_s fp_cpu ours_rss_MB fp_rss_MB
+: >"$scratch/runs"
+for ((k = 1; k <= reps; ++k)); do
+  if ((k % 2)); then a=$(ours 2); b=$(theirs); else b=$(theirs); a=$(ours 2); fi
+  echo "$a $b" >>"$scratch/runs"
+  awk '{ printf "%-4d %9.2f %9.2f %9.2f %9.2f %12.1f %12.1f\n", '"$k"', $1, $2, $4, $5, $3 / 1024, $6 / 1024 }' \
+    <<<"$a $b"
+done
+column_median() { cut -d' ' -f"$1" "$scratch/runs" | median; }
+column_max() { cut -d' ' -f"$1" "$scratch/runs" | sort -g | tail -n 1; }
+read -r t1 c1 m1 <<<"$(ours 1)"
+ours_failed=$(tail -n +2 "$scratch/ours/failures.tsv" | wc -l)
+fp_failed=0
+for f in "$scratch"/in/*.pdb; do
+  b=$(basename "$f" .pdb)
+  [[ -s $scratch/in/${b}_out/${b}_info.txt ]] || fp_failed=$((fp_failed + 1))
+done
+awk -v n="$n" -v a="$(column_median 1)" -v ca="$(column_median 2)" -v b="$(column_median 4)" \
+    -v cb="$(column_median 5)" -v ma="$(column_max 3)" -v mb="$(column_max 6)" -v t1="$t1" -v c1="$c1" -v m1="$m1" \
+    -v fa="$ours_failed" -v fb="$fp_failed" 'BEGIN {
+  printf "median wall: ours %.2f s = %.2f structures/s (%.2f per core), fpocket %.2f s = %.2f structures/s; throughput ours/fpocket %.2f\n",
+         a, n / a, n / a / 2, b, n / b, b / a
+  printf "median CPU: ours %.2f s = %.2f structures per CPU-second, fpocket %.2f s = %.2f; ratio %.2f\n",
+         ca, n / ca, cb, n / cb, cb / ca
+  printf "peak memory: ours -j 2 %.0f MB (one process), -j 1 %.0f MB (one worker; %.2f s wall, %.2f s CPU); fpocket %.0f MB per process\n",
+         ma / 1024, m1 / 1024, t1, c1, mb / 1024
+  printf "failures: ours %d, fpocket %d\n", fa, fb
+}'
+
+# The scaling case: 54 copies of 1a26A, each turned by a seeded random
+# rotation, their centres on a 3x3x6 lattice 0.9 of the chain's span apart
+# (the diameter holding 90% of its atoms); each copy's rotation is redrawn
+# until no atom lies within 3 A of an earlier copy: the copies touch without
+# clashing, and their interfaces are new pockets, as in an assembly.
+/usr/bin/python3 - "$root/examples/data/1a26A.pdb" "$scratch/copies54.cif" <<'EOF'
+import string, sys
+import gemmi, numpy as np
+from scipy.spatial import cKDTree
+src = gemmi.read_structure(sys.argv[1])
+chain = src[0][0]
+xyz = np.array([a.pos.tolist() for r in chain for a in r])
+centre = xyz.mean(axis=0)
+step = 2 * np.percentile(np.linalg.norm(xyz - centre, axis=1), 90)
+rng = np.random.default_rng(54)
+
+def rotation():  # uniform: a random unit quaternion
+    q = rng.normal(size=4)
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+out = gemmi.Structure()
+out.add_model(gemmi.Model("1"))
+placed = np.empty((0, 3))
+for k, site in enumerate(np.ndindex(3, 3, 6)):
+    tree = cKDTree(placed) if len(placed) else None
+    for attempt in range(1000):
+        p = (xyz - centre) @ rotation().T + step * np.array(site)
+        if tree is None or np.isinf(tree.query(p, distance_upper_bound=3.0)[0]).all():
+            break
+    else:
+        sys.exit("no rotation of copy %d clears the others" % k)
+    placed = np.vstack([placed, p])
+    copy = gemmi.Chain((string.ascii_uppercase + string.ascii_lowercase + string.digits)[k])
+    for r in chain:
+        copy.add_residue(r)
+    for a, q in zip((a for r in copy for a in r), p):
+        a.pos = gemmi.Position(*q)
+    out[0].add_chain(copy)
+out.setup_entities()
+out.make_mmcif_document().write_file(sys.argv[2])
+EOF
+cpu_timed() {  # FILE: "CPU_SECONDS MAX_RSS_KB ATOMS" of alphapocket pockets
+  rm -rf "$scratch/scale"
+  /usr/bin/time -f '%U %S %M' -o "$scratch/time" "$exe" -q pockets "$1" -o "$scratch/scale" >/dev/null
+  read -r u s m <"$scratch/time"
+  echo "$(bc -l <<<"$u + $s") $m $(grep -o '"atoms_kept": *[0-9]*' "$scratch/scale/report.json" | grep -o '[0-9]*$')"
+}
+read -r s1 r1 a1 <<<"$(cpu_timed "$root/examples/data/1a26A.pdb")"
+read -r s54 r54 a54 <<<"$(cpu_timed "$scratch/copies54.cif")"
+awk -v s1="$s1" -v r1="$r1" -v a1="$a1" -v s54="$s54" -v r54="$r54" -v a54="$a54" 'BEGIN {
+  printf "scaling: 1a26A %d atoms %.2f s %.0f MB; 54 copies %d atoms %.2f s %.0f MB: atoms x%.1f, time x%.1f (%.2f of linear), memory x%.1f\n",
+         a1, s1, r1 / 1024, a54, s54, r54 / 1024, a54 / a1, s54 / s1, (s54 / s1) / (a54 / a1), r54 / r1
+}'
