@@ -130,6 +130,43 @@ void print_paths(const molecule::Analysis& a) {
       line("widest pore", p);
     }
   }
+
+// Input the cavity search was not made for, said plainly: a C-alpha trace
+// or backbone-only model (no side chains: the "pockets" are the gaps
+// between backbone atoms) and a nucleic acid without protein (the ranking
+// is fitted to proteins' ligand sites).
+void warn_unsuited(const std::string& file, const molecule::Structure& structure) {
+  static const std::set<std::string> kBackbone{"N", "CA", "C", "O", "OXT"};
+  static const std::set<std::string> kNucleotides{"A", "C", "G", "U", "T", "I", "DA", "DC", "DG", "DT", "DU", "DI"};
+  std::size_t protein = 0, side_chain = 0, ca = 0, nucleic = 0;
+  for (const molecule::Atom& a : structure.atoms) {
+    if (kNucleotides.count(a.residue_name)) {
+      ++nucleic;
+    } else if (!a.hetero) {
+      ++protein;
+      ca += a.name == "CA";
+      side_chain += !kBackbone.count(a.name);
+    }
+  }
+  if (protein > 0 && side_chain == 0)
+    spdlog::warn("{}: {}: the cavities found are gaps between backbone atoms, not binding sites; use a full-atom model",
+                 file, ca == protein ? "only C-alpha atoms (a C-alpha trace)" : "only backbone atoms (no side chains)");
+  if (protein == 0 && nucleic > 0)
+    spdlog::warn("{}: only nucleic acids: the site ranking is made for proteins' ligand sites (bench/README.md)",
+                 file);
+}
+
+// -v: every site on stderr (the summary shows 10); -vv: with all their
+// lining residues.
+void log_sites(const molecule::Structure& structure, const molecule::Cavities& cavities) {
+  std::size_t rank = 0;
+  for (const molecule::Site& s : cavities.sites) {
+    const molecule::Cavity& c = cavities.cavity(s);
+    spdlog::debug("site {}: {}, score {:.3g}, SA volume {:.1f} A^3, centre ({:.2f}, {:.2f}, {:.2f})", ++rank,
+                  molecule::site_cavity_name(s), c.score, c.sa_volume, c.center.x, c.center.y, c.center.z);
+    spdlog::trace("site {} lining residues: {}", rank,
+                  residue_list(structure.atoms, c.lining_atoms, std::string::npos));
+  }
 }
 
 int run_pockets(const PocketsOptions& opt) {
@@ -148,6 +185,8 @@ int run_pockets(const PocketsOptions& opt) {
   options.version = ALPHAPOCKET_VERSION;
   const molecule::Analysis analysis = molecule::analyse(file, options);
   log_analysis(analysis);
+  warn_unsuited(file, analysis.structure);
+  log_sites(analysis.structure, analysis.search.cavities);
 
   Stopwatch write_time;
   const std::vector<std::string> written = molecule::write_outputs(analysis, out);
@@ -173,16 +212,17 @@ Subcommand add_pockets_command(CLI::App& app) {
       "pockets", "Find the pockets, voids and tunnels of a structure; write report, CSV, PyMOL script, PDB and meshes");
   sub->footer(
       "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
-      "ProtOr radii. OUTDIR gets "
-      "report.json, pockets.csv, pockets.pml, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb and meshes/; "
-      "see README.md for their contents.");
+      "ProtOr radii. OUTDIR gets report.json, pockets.csv, pockets.pml (PyMOL), pockets.cxc (ChimeraX), "
+      "structure.cif, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb and meshes/; see README.md for "
+      "their contents. -v logs every site, -vv with its lining residues.");
   add_input_options(*sub, opt->input);
   // Only structure files: atoms need radii and residues.
   sub->remove_option(sub->get_option("--weighted"));
   sub->get_option("FILE")->description("Structure file: .pdb .ent .cif .mmcif, optionally .gz");
   sub->add_option("-o,--output-dir", opt->output_dir,
                   "Directory for the results (created if missing; default: <name>_pockets in the current "
-                  "directory)");
+                  "directory)")
+      ->type_name("OUTDIR");
   add_cavity_options(*sub, opt->analysis);
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   return {sub, [opt] { return run_pockets(*opt); }};

@@ -49,14 +49,19 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
   return {
       sub.add_option("--probe", probe, "Solvent probe radius added to every atom radius, A (0: van der Waals balls)")
           ->capture_default_str()
-          ->check(finite_number())
-          ->check(CLI::Range(0.0, kMaxProbe))
+          ->type_name("R")
+          ->check(finite_number(0, kMaxProbe))
           ->group(group),
       sub.add_option("--model", selection.model, "Model number to read (MODEL n; default: the first model)")
-          ->check(CLI::Range(1, std::numeric_limits<int>::max()))
+          ->type_name("N")
+          ->check(CLI::PositiveNumber.description(""))
           ->group(group),
+      // One value per --chains (repeat it, or give A,B): FILE after it is FILE.
       sub.add_option("--chains", selection.chains, "Chains to keep, e.g. A,B (default: all)")
+          ->type_name("A,B")
           ->delimiter(',')
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
           ->group(group),
       sub.add_flag("--keep-hydrogens", selection.keep_hydrogens, "Keep hydrogen atoms (dropped by default)")
           ->group(group),
@@ -67,8 +72,8 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
           ->group(group),
       sub.add_option("--min-plddt", selection.min_plddt,
                      "Predicted models (AlphaFold): leave out residues with a lower pLDDT, 0-100 (default: keep all)")
-          ->check(finite_number())
-          ->check(CLI::Range(0.0, 100.0))
+          ->type_name("P")
+          ->check(finite_number(0, 100))
           ->group(group),
   };
 }
@@ -77,11 +82,12 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
   sub.add_option("--min-volume", options.cavities.min_volume,
                  "Drop pockets and voids whose SA volume (space the probe centre reaches) is below this, A^3")
       ->capture_default_str()
-      ->check(finite_number())
-      ->check(CLI::NonNegativeNumber);
-  sub.add_option("--mesh", options.mesh_format, "Format of the mesh files")
+      ->type_name("V")
+      ->check(finite_number(0));
+  sub.add_option("--mesh", options.mesh_format, "Format of the mesh files: ply, obj, off or stl")
+      ->type_name("FMT")
       ->capture_default_str()
-      ->check(CLI::IsMember({"ply", "obj", "off", "stl"}));
+      ->check(CLI::IsMember({"ply", "obj", "off", "stl"}).description(""));
   sub.add_option("--radii", options.radii_file,
                  "Radius file: RESIDUE ATOM RADIUS lines with ? and * wildcards, element SYMBOL RADIUS, or HOLE's "
                  ".rad format (VDWR records)");
@@ -90,23 +96,28 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
       ->capture_default_str();
   sub.add_option("--tunnel-probe", options.tunnels.probe, "Narrowest probe a tunnel or pore lets through, A")
       ->capture_default_str()
+      ->type_name("R")
       ->check(finite_number())
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber.description(""));
   sub.add_flag("--pores", options.tunnels.pores, "Also find pores: paths across the molecule from solvent to solvent");
 }
 
-CLI::Validator finite_number() {
+CLI::Validator finite_number(double lo, double hi) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [lo, hi](std::string& text) -> std::string {
         double value = 0;
         const char* begin = text.data();
         const char* end = begin + text.size();
         if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') ++begin;  // "+2" is fine
         const auto [ptr, ec] = std::from_chars(begin, end, value);
         if (ec != std::errc() || ptr != end || !std::isfinite(value)) return "'" + text + "' is not a finite number";
+        // Plain bounds: CLI::Range would print the largest double in full.
+        const auto bound = [](double b) { return fmt::format("{:g}", b); };
+        if (value < lo && hi == kNoBound) return "'" + text + "' is below " + bound(lo);
+        if (value < lo || value > hi) return "'" + text + "' is not between " + bound(lo) + " and " + bound(hi);
         return {};
       },
-      "NUMBER");
+      "");
 }
 
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options) {

@@ -3,6 +3,7 @@
 // and a few helpers for options and output.
 #pragma once
 #include <chrono>
+#include <limits>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -62,7 +63,9 @@ inline constexpr const char* kAlphaSqHelp =
     "alpha is a SQUARED radius (alpha_sq); for weighted points (--weighted, or a structure file) it may be "
     "negative (a ball of radius r enters at -r^2). A simplex whose value equals alpha_sq counts as present "
     "(CGAL's convention).";
-CLI::Validator finite_number();
+inline constexpr double kNoBound = std::numeric_limits<double>::infinity();
+// A finite number within [lo, hi], with a plain message otherwise.
+CLI::Validator finite_number(double lo = -kNoBound, double hi = kNoBound);
 
 // The points of a point file, or the atoms of a structure file as
 // weighted points (always: ProtOr radius + probe, molecule::atom_balls),
