@@ -9,12 +9,6 @@
 namespace molecule {
 namespace {
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", x);
-  return buf;
-}
-
 // rgb(r,g,b): a colour no atom spec can be read into (unlike #rrggbb).
 std::string rgb(Rgb c) {
   char buf[32];
@@ -26,22 +20,19 @@ std::string rgb(Rgb c) {
 // @@serial_number>=12 & @@serial_number<=15) | (#1 & @@serial_number=20)".
 std::string atoms_spec(const std::vector<std::size_t>& ids) {
   std::string s;
-  for (std::size_t k = 0; k < ids.size();) {
-    std::size_t end = k + 1;
-    while (end < ids.size() && ids[end] == ids[end - 1] + 1) ++end;
+  for (const auto& [first, last] : id_runs(ids)) {
     if (!s.empty()) s += " | ";
-    s += end - k == 1 ? "(#1 & @@serial_number=" + std::to_string(ids[k]) + ")"
-                      : "(#1 & @@serial_number>=" + std::to_string(ids[k]) +
-                            " & @@serial_number<=" + std::to_string(ids[end - 1]) + ")";
-    k = end;
+    s += first == last ? "(#1 & @@serial_number=" + std::to_string(first) + ")"
+                       : "(#1 & @@serial_number>=" + std::to_string(first) + " & @@serial_number<=" +
+                             std::to_string(last) + ")";
   }
   return s;
 }
 
 std::string marker(const std::string& model, const SinkSphere& sphere, Rgb color) {
   const alpha::Vec3& p = sphere.center;
-  return "marker " + model + " position " + number(p.x) + "," + number(p.y) + "," + number(p.z) + " color " +
-         rgb(color) + " radius " + number(std::max(sphere.radius, 0.05)) + "\n";
+  return "marker " + model + " position " + script_number(p.x) + "," + script_number(p.y) + "," + script_number(p.z) + " color " +
+         rgb(color) + " radius " + script_number(std::max(sphere.radius, 0.05)) + "\n";
 }
 
 std::string header(const PocketRun& run, const ViewerScene& scene) {

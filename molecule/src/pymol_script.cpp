@@ -1,5 +1,6 @@
 #include "molecule/pymol_script.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "molecule/pocket_colors.hpp"
@@ -11,12 +12,6 @@ namespace {
 // Atom-id runs per "select" line: keeps lines short for PyMOL's parser.
 constexpr std::size_t kRunsPerLine = 40;
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", x);
-  return buf;
-}
-
 std::string rgb(Rgb c) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "[%d, %d, %d]", c.r, c.g, c.b);
@@ -24,29 +19,23 @@ std::string rgb(Rgb c) {
 }
 
 std::string position(const alpha::Vec3& p) {
-  return "pos=[" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + "]";
+  return "pos=[" + script_number(p.x) + ", " + script_number(p.y) + ", " + script_number(p.z) + "]";
 }
 
 // "select NAME, OBJ and id 12-15+20 ..." lines, kRunsPerLine runs a line.
 std::string select_lines(const std::string& name, const std::string& obj, const std::vector<std::size_t>& ids) {
-  if (ids.empty()) return "select " + name + ", none\n";
+  const auto runs = id_runs(ids);
+  if (runs.empty()) return "select " + name + ", none\n";
   std::string s;
-  std::vector<std::size_t> part;
-  const auto flush = [&] {
-    s += "select " + name + ", " + (s.empty() ? "" : name + " or ") + "(" + obj + " and id " +
-         id_ranges(part, "+", "-") + ")\n";
-    part.clear();
-  };
-  std::size_t runs = 0;
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    if (k == 0 || ids[k] != ids[k - 1] + 1) ++runs;
-    if (runs > kRunsPerLine) {
-      flush();
-      runs = 1;
+  for (std::size_t k = 0; k < runs.size(); k += kRunsPerLine) {
+    std::string part;
+    for (std::size_t j = k; j < std::min(runs.size(), k + kRunsPerLine); ++j) {
+      if (!part.empty()) part += '+';
+      part += std::to_string(runs[j].first);
+      if (runs[j].second > runs[j].first) part += '-' + std::to_string(runs[j].second);
     }
-    part.push_back(ids[k]);
+    s += "select " + name + ", " + (k == 0 ? "" : name + " or ") + "(" + obj + " and id " + part + ")\n";
   }
-  flush();
   return s;
 }
 
@@ -95,7 +84,7 @@ std::string cavities(const ViewerScene& scene) {
     s += select_lines(c.name, scene.object, c.lining_ids);
     s += "pseudoatom " + c.name + "_center, " + position(c.center) + ", vdw=0.4\n";
     for (const SinkSphere& sphere : c.space)
-      s += "pseudoatom " + c.name + "_space, " + position(sphere.center) + ", vdw=" + number(sphere.radius) + "\n";
+      s += "pseudoatom " + c.name + "_space, " + position(sphere.center) + ", vdw=" + script_number(sphere.radius) + "\n";
     s += "color ap_" + c.name + ", " + c.name + "_*\n";
   }
   // Worst site first: the best one's colour is the one left on shared residues.
@@ -120,7 +109,7 @@ std::string tunnels(const ViewerScene& scene) {
   for (const SceneTunnel& t : scene.tunnels) {
     s += select_lines(t.name, scene.object, t.lining_ids);
     s += "pseudoatom " + t.name + "_bottleneck, " + position(t.bottleneck.center) +
-         ", vdw=" + number(t.bottleneck.radius) + "\n";
+         ", vdw=" + script_number(t.bottleneck.radius) + "\n";
   }
   if (!scene.tunnels.empty()) {
     s += "set_color ap_tunnel, " + rgb(kTunnelColor) + "\n";

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string_view>
 
@@ -78,17 +79,21 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
   return scene;
 }
 
-std::string id_ranges(const std::vector<std::size_t>& ids, const std::string& join, const std::string& dash) {
-  std::string out;
-  for (std::size_t k = 0; k < ids.size();) {
-    std::size_t end = k + 1;
-    while (end < ids.size() && ids[end] == ids[end - 1] + 1) ++end;
-    if (!out.empty()) out += join;
-    out += std::to_string(ids[k]);
-    if (end - k > 1) out += dash + std::to_string(ids[end - 1]);
-    k = end;
+std::vector<std::pair<std::size_t, std::size_t>> id_runs(const std::vector<std::size_t>& ids) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (const std::size_t id : ids) {
+    if (!runs.empty() && id == runs.back().second + 1)
+      runs.back().second = id;
+    else
+      runs.emplace_back(id, id);
   }
-  return out;
+  return runs;
+}
+
+std::string script_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", x);
+  return buf;
 }
 
 }  // namespace molecule

@@ -8,6 +8,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "alpha/geometry.hpp"
@@ -50,8 +51,10 @@ std::string viewer_object_name(const std::string& file);
 
 ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& ligand_ids);
 
-// "12-15+20" style runs of ascending ids: consecutive ids as first-last,
-// joined by `join` (PyMOL: "+").
-std::string id_ranges(const std::vector<std::size_t>& ids, const std::string& join, const std::string& dash);
+// Ascending ids as runs of consecutive ids, (first, last) each.
+std::vector<std::pair<std::size_t, std::size_t>> id_runs(const std::vector<std::size_t>& ids);
+
+// A length or coordinate for a script: 3 decimals.
+std::string script_number(double x);
 
 }  // namespace molecule
