@@ -130,6 +130,7 @@ void print_paths(const molecule::Analysis& a) {
       line("widest pore", p);
     }
   }
+}
 
 // Input the cavity search was not made for, said plainly: a C-alpha trace
 // or backbone-only model (no side chains: the "pockets" are the gaps
