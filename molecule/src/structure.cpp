@@ -107,24 +107,32 @@ bool is_pdb_charge(char c79, char c80) {
   return !(digit(c79) && !sign(c80)) && !(digit(c80) && !sign(c79));
 }
 
-// gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
-// a word, and rejects a bad charge without a line number, so the records it
-// reads are checked here first: those starting with ATOM or HETA in any
-// case, up to an END record. `old_columns`: columns 73-80 are not read.
-void check_pdb_records(std::string_view text, const std::string& name, bool old_columns) {
+// Calls fn(line_number, line) for each line of text (numbered from 1, a
+// trailing '\r' removed) until fn returns false.
+template <class Fn>
+void for_each_line(std::string_view text, Fn fn) {
   std::size_t line_number = 0;
   for (std::size_t i = 0; i < text.size();) {
     std::size_t eol = text.find('\n', i);
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view line = text.substr(i, eol - i);
     i = eol + 1;
-    ++line_number;
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (!fn(++line_number, line)) return;
+  }
+}
+
+// gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
+// a word, and rejects a bad charge without a line number, so the records it
+// reads are checked here first: those starting with ATOM or HETA in any
+// case, up to an END record. `old_columns`: columns 73-80 are not read.
+void check_pdb_records(std::string_view text, const std::string& name, bool old_columns) {
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
     if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
         (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
-      return;
+      return false;
     const bool atom = equals_ci(line.substr(0, 4), "atom");
-    if (!atom && !equals_ci(line.substr(0, 4), "heta")) continue;
-    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
     const std::string_view record = atom ? "ATOM" : "HETATM";
     const auto error = [&](const std::string& what) {
       fail(name, "line " + std::to_string(line_number) + ": " + what);
@@ -136,7 +144,8 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
     if (!old_columns && line.size() >= 79 && !is_pdb_charge(line[78], line.size() >= 80 ? line[79] : ' '))
       error("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
             "')");
-  }
+    return true;
+  });
 }
 
 // Columns 73-80 of the PDB format before 1996 (e.g. HOLE's gramicidin,
@@ -151,22 +160,20 @@ struct OldColumns {
 };
 
 std::optional<OldColumns> old_format_columns(std::string_view text) {
-  std::size_t line_number = 0;
-  for (std::size_t i = 0; i < text.size();) {
-    std::size_t eol = text.find('\n', i);
-    if (eol == std::string_view::npos) eol = text.size();
-    std::string_view line = text.substr(i, eol - i);
-    i = eol + 1;
-    ++line_number;
-    if (line.ends_with('\r')) line.remove_suffix(1);
-    if (line.size() < 80 || !(equals_ci(line.substr(0, 4), "atom") || equals_ci(line.substr(0, 4), "heta"))) continue;
+  std::optional<OldColumns> found;
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
+    if (line.size() < 80 || !(equals_ci(line.substr(0, 4), "atom") || equals_ci(line.substr(0, 4), "heta")))
+      return true;
     const std::string_view tail = line.substr(76, 4);
     const std::size_t first_digit = tail.find_first_not_of(' ');
-    if (first_digit > 2) continue;
-    if (std::all_of(tail.begin() + first_digit, tail.end(), [](char c) { return c >= '0' && c <= '9'; }))
-      return OldColumns{line_number, std::string(line.substr(72, 8))};
-  }
-  return std::nullopt;
+    if (first_digit > 2) return true;
+    if (std::all_of(tail.begin() + first_digit, tail.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      found = OldColumns{line_number, std::string(line.substr(72, 8))};
+      return false;
+    }
+    return true;
+  });
+  return found;
 }
 
 std::string join(const std::vector<std::string>& items, std::size_t max_items) {
