@@ -36,10 +36,6 @@
 #include "molecule/checksum.hpp"
 #include "progress.hpp"
 
-#ifndef ALPHAPOCKET_VERSION
-#define ALPHAPOCKET_VERSION "unknown"
-#endif
-
 namespace alphapocket {
 namespace {
 
@@ -234,7 +230,6 @@ private:
 };
 
 int run_batch(BatchOptions& opt) {
-  opt.analysis.version = ALPHAPOCKET_VERSION;
   opt.analysis.max_atoms = opt.max_atoms;
   opt.analysis.outputs = molecule::parse_output_selection(opt.outputs);
   std::vector<molecule::BatchInput> inputs = collect_inputs(opt);  // errors (duplicate ids) before any work

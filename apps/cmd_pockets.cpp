@@ -37,10 +37,6 @@
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 
-#ifndef ALPHAPOCKET_VERSION
-#define ALPHAPOCKET_VERSION "unknown"
-#endif
-
 namespace alphapocket {
 namespace {
 
@@ -183,7 +179,6 @@ int run_pockets(const PocketsOptions& opt) {
   molecule::AnalysisOptions options = opt.analysis;
   options.structure = opt.input.structure;
   options.cavities.probe = opt.input.probe;
-  options.version = ALPHAPOCKET_VERSION;
   const molecule::Analysis analysis = molecule::analyse(file, options);
   log_analysis(analysis);
   warn_unsuited(file, analysis.structure);

@@ -10,11 +10,8 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "alphapocket/version.hpp"
 #include "commands.hpp"
-
-#ifndef ALPHAPOCKET_VERSION
-#define ALPHAPOCKET_VERSION "unknown"
-#endif
 
 namespace {
 

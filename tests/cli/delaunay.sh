@@ -152,7 +152,13 @@ case $case_name in
   version)
     run --version
     expect_success
-    grep -q '^alphapocket [0-9]' "$tmp/out" || fail "no version on stdout"
+    # The version of project(VERSION) in CMakeLists.txt, the one place it is set.
+    expected=$(sed -n 's/^project(alphapocket VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")
+    [[ -n $expected ]] || fail "no project(alphapocket VERSION x.y.z) in CMakeLists.txt"
+    grep -qx "alphapocket $expected" "$tmp/out" || fail "--version is not 'alphapocket $expected'"
+    run pockets "$data/1grm_single.pdb" -o "$tmp/pockets" --tunnels-from none -q
+    expect_success
+    grep -q "\"alphapocket\": *\"$expected\"" "$tmp/pockets/report.json" || fail "report.json's alphapocket is not $expected"
     ;;
   *)
     echo "unknown case: $case_name" >&2

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "alpha/error.hpp"
+#include "alphapocket/version.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
@@ -45,7 +46,7 @@ private:
 struct AnalysisOptions {
   StructureOptions structure;
   CavityOptions cavities;
-  std::string version;  // of alphapocket, written into the report
+  std::string version = alphapocket::kVersion;  // written into the report
   // More atoms after the selection: LimitExceeded before the search. 0: no limit.
   std::size_t max_atoms = 0;
   OutputSelection outputs;
