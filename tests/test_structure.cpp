@@ -450,11 +450,11 @@ TEST_CASE("structure: warnings count only the kept atoms", "[structure]") {
   CHECK(s.report.warnings.empty());
   REQUIRE(s.hetero_groups.size() == 1);
   const auto& ligand = s.hetero_groups[0].atoms;
-  REQUIRE(ligand.size() == 3);
-  CHECK(ligand[0].element == "X");
-  CHECK(ligand[0].radius == molecule::kDefaultRadius);
+  REQUIRE(ligand.size() == 3);  // in the canonical order: C1, then the two Q1 by position
+  CHECK(ligand[0].radius == 1.70);
+  CHECK(ligand[1].element == "X");
   CHECK(ligand[1].radius == molecule::kDefaultRadius);
-  CHECK(ligand[2].radius == 1.70);
+  CHECK(ligand[2].radius == molecule::kDefaultRadius);
 
   // Kept: one warning for the two atoms.
   StructureOptions hetero;
@@ -609,7 +609,9 @@ TEST_CASE("structure: coordinates that are not numbers within 1e6 A name the ato
   CHECK(parse_error(with_x("1e20"), "x.cif").rfind(atom, 0) == 0);
   CHECK(parse_error(with_x("-2e6"), "x.cif").rfind(atom, 0) == 0);
   CHECK(parse_error(with_x("?"), "x.cif").rfind(atom + "nan", 0) == 0);
-  CHECK(molecule::parse_structure(with_x("999999.0"), "x.cif").atoms.front().position.x == 999999.0);
+  const Structure far = molecule::parse_structure(with_x("999999.0"), "x.cif");
+  REQUIRE(find_atom(far.atoms, "A", 16, "N"));
+  CHECK(find_atom(far.atoms, "A", 16, "N")->position.x == 999999.0);
 }
 
 TEST_CASE("structure: old-format PDB columns 73-80 (id code and line number) are not read", "[structure]") {
@@ -653,4 +655,65 @@ TEST_CASE("structure: a PDB charge gemmi cannot read names the line and the text
     INFO(good);
     CHECK(molecule::parse_structure(four(good), "x.pdb").atoms.size() == 4);
   }
+}
+
+TEST_CASE("structure: the atoms do not depend on the order of the records", "[structure]") {
+  // Two conformers of equal occupancy, B listed first: A is kept (the
+  // smallest letter, not the first in the file), and the atoms come in
+  // the canonical order whatever the order of the records.
+  std::vector<std::string> records;
+  for (int i = 0; i < 4; ++i)
+    records.push_back(pdb_atom("ATOM", i + 1, i % 2 ? "CA" : "N", ' ', "ALA", 'A', i / 2 + 1, 3.8 * i, 0, 0, 1, "C"));
+  records.push_back(pdb_atom("ATOM", 5, "CB", 'B', "ALA", 'A', 2, 9, 1, 0, 0.5, "C"));
+  records.push_back(pdb_atom("ATOM", 6, "CB", 'A', "ALA", 'A', 2, 9, 2, 0, 0.5, "C"));
+  std::sort(records.begin(), records.end());
+  std::vector<Structure> reads;
+  do {
+    std::string pdb;
+    for (const std::string& r : records) pdb += r;
+    reads.push_back(molecule::parse_structure(pdb, "x.pdb"));
+  } while (std::next_permutation(records.begin(), records.end()));
+  REQUIRE(reads.size() == 720);
+  for (const Structure& s : reads) {
+    REQUIRE(s.atoms.size() == 5);
+    CHECK(find_atom(s.atoms, "A", 2, "CB")->altloc == 'A');
+    check_same(s, reads.front());
+  }
+  CHECK(reads.front().atoms[0].name == "CA");  // residue 1: CA before N
+}
+
+TEST_CASE("structure: atoms alike in identity are ordered by position, whatever the order of the records",
+          "[structure]") {
+  // Duplicate names: two CB without altloc (both kept); CA in altlocs A and
+  // B and two CG in B only, all of occupancy 0.5: A is chosen (a tie: the
+  // smallest letter) and one CG kept, by position, not the first in the
+  // file. A water in the same chain stays after the residue (a hetero
+  // group: one residue is no polymer).
+  std::vector<std::string> records{
+      pdb_atom("ATOM", 1, "CA", 'A', "ALA", 'A', 1, 1.5, 0, 0, 0.5, "C"),
+      pdb_atom("ATOM", 2, "CA", 'B', "ALA", 'A', 1, 1.5, 0.3, 0, 0.5, "C"),
+      pdb_atom("ATOM", 3, "CB", ' ', "ALA", 'A', 1, 2, 1.5, 0, 1, "C"),
+      pdb_atom("ATOM", 3, "CB", ' ', "ALA", 'A', 1, 2, -1.5, 0, 1, "C"),
+      pdb_atom("ATOM", 5, "CG", 'B', "ALA", 'A', 1, 3, 2, 1, 0.5, "C"),
+      pdb_atom("ATOM", 6, "CG", 'B', "ALA", 'A', 1, 3, 2, -1, 0.5, "C"),
+      pdb_atom("HETATM", 7, "O", ' ', "HOH", 'A', 9, 5, 5, 5, 1, "O"),
+  };
+  StructureOptions waters;
+  waters.keep_waters = waters.keep_hetero = true;
+  std::sort(records.begin(), records.end());
+  std::vector<Structure> reads;
+  do {
+    std::string pdb;
+    for (const std::string& r : records) pdb += r;
+    reads.push_back(molecule::parse_structure(pdb, "x.pdb", waters));
+  } while (std::next_permutation(records.begin(), records.end()));
+  REQUIRE(reads.size() == 5040);
+  for (const Structure& s : reads) check_same(s, reads.front());
+  const std::vector<Atom>& atoms = reads.front().atoms;
+  std::vector<std::string> names;
+  for (const Atom& a : atoms) names.push_back(a.residue_name + ":" + a.name + (a.altloc ? std::string(1, a.altloc) : ""));
+  CHECK(names == std::vector<std::string>{"ALA:CAA", "ALA:CB", "ALA:CB", "ALA:CGB", "HOH:O"});
+  REQUIRE(atoms.size() == 5);
+  CHECK(atoms[1].position.y == -1.5);  // the two CB by position
+  CHECK(atoms[3].position.z == -1);    // the CG kept: the smaller position
 }

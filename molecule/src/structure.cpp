@@ -8,6 +8,8 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <tuple>
+#include <unordered_map>
 #include <sstream>
 
 #include <gemmi/cif.hpp>
@@ -277,7 +279,9 @@ char no_blank(char c) { return c == ' ' ? '\0' : c; }
 int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid.num : 0; }
 
 // The altloc kept for a group of residues with one sequence number: the
-// highest mean occupancy, ties to the first in the file; '\0' if none.
+// highest mean occupancy, ties to the smallest letter (not the first in the
+// file: the choice must not depend on the order of the records); '\0' if
+// none.
 char chosen_altloc(std::span<const gemmi::Residue> group) {
   struct Conformer {
     char altloc;
@@ -295,23 +299,42 @@ char chosen_altloc(std::span<const gemmi::Residue> group) {
     }
   const Conformer* best = nullptr;
   for (const Conformer& c : seen)  // means compared without dividing: a/n > b/m as a*m > b*n
-    if (!best || c.occupancy * double(best->atoms) > best->occupancy * double(c.atoms)) best = &c;
+    if (!best || c.occupancy * double(best->atoms) > best->occupancy * double(c.atoms) ||
+        (c.occupancy * double(best->atoms) == best->occupancy * double(c.atoms) && c.altloc < best->altloc))
+      best = &c;
   return best ? best->altloc : '\0';
 }
 
-// Which atoms of a residue the altloc selection keeps.
+// Which atoms of a residue the altloc selection keeps: those without an
+// altloc, those of the chosen one, and for each atom name without an atom in
+// the chosen one, that name's best other atom: the highest occupancy, ties
+// to the smallest altloc, then position and serial (not the first in the
+// file). One pass with a table by name: linear in the atoms (a residue may
+// hold tens of thousands).
 std::vector<bool> altloc_keep(const gemmi::Residue& r, char chosen) {
   const auto& atoms = r.atoms;
+  constexpr std::size_t kNone = std::size_t(-1);
+  struct Name {
+    bool in_chosen = false;
+    std::size_t best = kNone;  // the best atom in another altloc
+  };
+  const auto rank = [](const gemmi::Atom& a) {
+    return std::make_tuple(-a.occ, a.altloc, a.pos.x, a.pos.y, a.pos.z, a.serial);
+  };
+  std::unordered_map<std::string_view, Name> names;
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    if (!atoms[i].altloc) continue;
+    Name& n = names[atoms[i].name];
+    if (atoms[i].altloc == chosen)
+      n.in_chosen = true;
+    else if (n.best == kNone || rank(atoms[i]) < rank(atoms[n.best]))
+      n.best = i;
+  }
   std::vector<bool> keep(atoms.size(), true);
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     if (!atoms[i].altloc || atoms[i].altloc == chosen) continue;
-    // Another conformer: kept only when its name has no atom in the chosen
-    // one, and it is that name's highest occupancy (ties: first) atom.
-    for (std::size_t j = 0; j < atoms.size() && keep[i]; ++j) {
-      if (j == i || !atoms[j].altloc || atoms[j].name != atoms[i].name) continue;
-      if (atoms[j].altloc == chosen || atoms[j].occ > atoms[i].occ || (atoms[j].occ == atoms[i].occ && j < i))
-        keep[i] = false;
-    }
+    const Name& n = names.at(atoms[i].name);
+    keep[i] = !n.in_chosen && n.best == i;
   }
   return keep;
 }
@@ -327,6 +350,19 @@ std::string describe(const Atom& a) {
   return a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
 }
 
+// The canonical order of atoms: by chain, residue number, insertion code,
+// residue name, atom name, altloc, then position, serial and the remaining
+// fields, so that atoms alike in identity (duplicate names) are ordered too
+// and only atoms equal in every field tie. Structure::atoms are kept in it
+// (per kind, see select), so that every result computed from them is a
+// function of the set of atoms, not of the order of the records.
+auto canonical_key(const Atom& a) {
+  return std::tie(a.chain, a.seq_num, a.icode, a.residue_name, a.name, a.altloc, a.position.x, a.position.y,
+                  a.position.z, a.serial, a.element, a.occupancy, a.b_factor, a.hetero);
+}
+
+bool canonical_less(const Atom& a, const Atom& b) { return canonical_key(a) < canonical_key(b); }
+
 // Radii per atom, with one warning per element that gets the default;
 // warnings count only the atoms kept (`kept`), the ones a caller uses.
 class RadiusAssigner {
@@ -335,8 +371,7 @@ public:
     const AtomRadius r = atom_radius(a.residue_name, a.name, a.element);
     if (kept && r.source == RadiusSource::Default) {
       Unknown& u = unknown_[a.element];
-      if (u.atoms++ == 0)
-        u.first = "atom " + describe(a);
+      if (u.atoms++ == 0 || canonical_less(a, u.first)) u.first = a;
     }
     return r.value;
   }
@@ -344,7 +379,7 @@ public:
     for (const auto& [element, u] : unknown_) {
       std::ostringstream s;
       s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element '" << element
-        << "' (first: " << u.first << ") given radius " << kDefaultRadius << " A";
+        << "' (first: atom " << describe(u.first) << ") given radius " << kDefaultRadius << " A";
       warnings.push_back(s.str());
     }
   }
@@ -352,7 +387,7 @@ public:
 private:
   struct Unknown {
     std::size_t atoms = 0;
-    std::string first;
+    Atom first;  // in the canonical order
   };
   std::map<std::string, Unknown> unknown_;  // ordered: deterministic warnings
 };
@@ -449,6 +484,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
     return options.chains.empty() ||
            std::find(options.chains.begin(), options.chains.end(), chain) != options.chains.end();
   };
+  std::vector<Atom> kept_atoms[3];  // polymer, hetero, water
   for (const gemmi::Chain& chain : model.chains) {
     const auto& residues = chain.residues;
     const bool chain_has_atom_records = has_atom_records(chain);
@@ -498,12 +534,23 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
           atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
           ligand.kept = ligand.kept || (kept && in_ligand);
-          if (kept) out.atoms.push_back(std::move(atom));
+          if (kept) kept_atoms[water ? 2 : hetero ? 1 : 0].push_back(std::move(atom));
         }
         if (!ligand.atoms.empty()) out.hetero_groups.push_back(std::move(ligand));
       }
     }
   }
+  // The polymer first, then the kept hetero groups, then waters: a copy of
+  // the atoms searched followed by the ligands (structure_copy) reads back
+  // in the same order.
+  for (std::vector<Atom>& atoms : kept_atoms) {
+    std::sort(atoms.begin(), atoms.end(), canonical_less);
+    out.atoms.insert(out.atoms.end(), std::make_move_iterator(atoms.begin()), std::make_move_iterator(atoms.end()));
+  }
+  for (HeteroGroup& g : out.hetero_groups) std::sort(g.atoms.begin(), g.atoms.end(), canonical_less);
+  std::sort(out.hetero_groups.begin(), out.hetero_groups.end(), [](const HeteroGroup& a, const HeteroGroup& b) {
+    return canonical_less(a.atoms.front(), b.atoms.front());
+  });
   report.kept = out.atoms.size();
   report.hetero_groups = out.hetero_groups.size();
   radius.add_warnings(report.warnings);

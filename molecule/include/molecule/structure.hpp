@@ -7,7 +7,7 @@
 //
 //   1. chains not selected are dropped (all chains by default);
 //   2. alternate locations: one conformer per residue is kept, the altloc
-//      with the highest mean occupancy (ties: the one first in the file).
+//      with the highest mean occupancy (ties: the smallest letter).
 //      Atoms without an altloc are always kept; an atom name that has no
 //      atom in the chosen altloc keeps its own highest-occupancy
 //      alternative. Residues sharing a sequence number (microheterogeneity,
@@ -127,8 +127,13 @@ struct StructureReport {
 };
 
 struct Structure {
-  std::vector<Atom> atoms;                 // the selected atoms, in file order; at least 4
-  std::vector<HeteroGroup> hetero_groups;  // in file order
+  // The selected atoms, at least 4, in the canonical order: the polymer's,
+  // then those of kept hetero groups, then waters; each part by chain,
+  // residue number, insertion code, residue name, atom name, altloc, then
+  // position, serial and the other fields. Not the file's: permuting the
+  // records of a file changes nothing computed from them.
+  std::vector<Atom> atoms;
+  std::vector<HeteroGroup> hetero_groups;  // the same order (of their atoms, and of their first atoms)
   StructureReport report;
 };
 
