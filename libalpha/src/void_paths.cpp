@@ -35,7 +35,10 @@ PathTree search(const VoidGraph& g, std::span<const Index> sources, const std::v
   }
   std::vector<bool> settled(g.num_nodes(), false);
   while (!queue.empty()) {
-    const auto [value, n] = queue.top();
+    // Not a structured binding: clang 14 (the fuzz and sanitizer builds)
+    // cannot capture one in the lambda below.
+    const double value = queue.top().first;
+    const Index n = queue.top().second;
     queue.pop();
     if (settled[n]) continue;
     settled[n] = true;

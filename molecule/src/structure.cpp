@@ -1,5 +1,8 @@
 #include "molecule/structure.hpp"
 
+// Compiled as C++17 by clang (molecule/CMakeLists.txt): no std::span or
+// starts_with here.
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -7,7 +10,6 @@
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <span>
 #include <tuple>
 #include <unordered_map>
 #include <sstream>
@@ -67,7 +69,7 @@ bool starts_with_data_block(std::string_view text) {
 bool has_atom_records(std::string_view text) {
   for (std::size_t i = 0; i < text.size();) {
     const std::string_view line = text.substr(i, 6);
-    if (line.starts_with("ATOM ") || line == "HETATM") return true;
+    if (line.substr(0, 5) == "ATOM " || line == "HETATM") return true;
     const std::size_t eol = text.find('\n', i);
     if (eol == std::string_view::npos) break;
     i = eol + 1;
@@ -119,7 +121,7 @@ void for_each_line(std::string_view text, Fn fn) {
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view line = text.substr(i, eol - i);
     i = eol + 1;
-    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (!fn(++line_number, line)) return;
   }
 }
@@ -282,7 +284,7 @@ int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid
 // highest mean occupancy, ties to the smallest letter (not the first in the
 // file: the choice must not depend on the order of the records); '\0' if
 // none.
-char chosen_altloc(std::span<const gemmi::Residue> group) {
+char chosen_altloc(gemmi::Span<const gemmi::Residue> group) {
   struct Conformer {
     char altloc;
     double occupancy = 0;
@@ -492,7 +494,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
       // A group: consecutive residues with one sequence number.
       std::size_t end = g + 1;
       while (end < residues.size() && residues[end].seqid == residues[g].seqid) ++end;
-      const std::span<const gemmi::Residue> group(residues.data() + g, end - g);
+      const gemmi::Span<const gemmi::Residue> group(residues.data() + g, end - g);
       g = end;
       const char chosen = chosen_altloc(group);
       for (const gemmi::Residue& res : group) {
