@@ -45,7 +45,7 @@ fi
 
 source "$here/lib.sh" "$@"
 # lib.sh's clean-up, after unmounting what this case mounted.
-trap 'umount -q "$tmp/ro" "$tmp/full" 2>/dev/null || true; chmod -R u+rwx "$tmp"; rm -rf "$tmp"' EXIT
+trap 'umount -q "$tmp/fs" 2>/dev/null || true; chmod -R u+rwx "$tmp"; rm -rf "$tmp"' EXIT
 
 # Regex-escapes a path for the message patterns.
 escape() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|/]/\\&/g'; }
@@ -81,8 +81,13 @@ case $outdir_kind in
     echo previous >"$out/meshes/pocket_99.ply"
     ;;
   under_file) echo file >"$tmp/file"; out=$tmp/file/out ;;
-  readonly_fs) mkdir "$tmp/ro"; mount -t tmpfs -o ro,size=64k tmpfs "$tmp/ro"; out=$tmp/ro/out ;;
-  full_fs) mkdir "$tmp/full"; mount -t tmpfs -o size=16k tmpfs "$tmp/full"; out=$tmp/full/out ;;
+  readonly_fs | full_fs)
+    mkdir "$tmp/fs"
+    options=size=16k
+    [[ $outdir_kind == readonly_fs ]] && options=ro,size=16k
+    mount -t tmpfs -o "$options" tmpfs "$tmp/fs" || { echo "SKIP [$id_command]: cannot mount a tmpfs"; exit 77; }
+    out=$tmp/fs/out
+    ;;
   dangling) ln -s "$tmp/nowhere" "$tmp/link"; out=$tmp/link ;;
   empty) out= ;;
   root) out=/ ;;
