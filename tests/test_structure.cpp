@@ -501,8 +501,10 @@ TEST_CASE("structure: PDB coordinates must be numbers", "[structure]") {
   for (const char* y : {"     abc", "        ", "  1.5x  ", " 1.2.3  ", " - 1.000", "     nan", "   1.5e3", "   1 2  ",
                         "       -", "       .", "\t  1.000"}) {
     INFO("'" << y << "'");
+    std::string shown = y;  // as quoted: a control character becomes '?'
+    std::replace(shown.begin(), shown.end(), '\t', '?');
     CHECK(parse_error(with_y(y), "x.pdb") ==
-          "x.pdb: line 3: bad coordinates in ATOM record (columns 31-54: '   7.600" + std::string(y) + "   0.000')");
+          "x.pdb: line 3: bad coordinates in ATOM record (columns 31-54: '   7.600" + shown + "   0.000')");
   }
   // Numbers written in other ways still read, with Windows line ends too.
   for (const auto& [y, value] : std::vector<std::pair<std::string, double>>{

@@ -23,11 +23,17 @@
 #include "alpha/input_file.hpp"
 #include "gunzip.hpp"
 #include "molecule/radii.hpp"
+#include "molecule/safe_text.hpp"
 
 namespace molecule {
 namespace {
 
-[[noreturn]] void fail(const std::string& name, const std::string& what) { throw StructureError(name + ": " + what); }
+// The problem may quote the file's own bytes (a record, a token): any
+// control or non-ASCII byte among them becomes '?', so the message stays
+// one line and prints nothing but text.
+[[noreturn]] void fail(const std::string& name, const std::string& what) {
+  throw StructureError(name + ": " + printable_ascii(what));
+}
 
 // ---------------------------------------------------------------- input
 
