@@ -17,6 +17,7 @@
 #include "alpha/point_grid.hpp"
 #include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
+#include "nearest_triangle.hpp"
 
 namespace molecule {
 namespace {
@@ -167,10 +168,11 @@ public:
           if (flow_.outside(t_.cell(c).n[k]) && empty(s_.cell_triangle(c, k)))
             region_mouths.push_back(s_.cell_triangle(c, k));
       const RegionSpace space{cells, space_};
+      const NearestTriangle mouths(t_, s_, region_mouths);
       if (region_mouths.empty()) {
         for (Index c : cells) cavity_of_[c] = next_id;
         ++next_id;
-        keep(out.voids, cells, space, region_mouths);
+        keep(out.voids, cells, space, mouths);
         continue;
       }
       std::vector<double> free_volume;
@@ -183,7 +185,7 @@ public:
         for (Index c : basin) cavity_of_[c] = next_id;
         ++next_id;
       }
-      for (const auto& basin : basins) keep(out.pockets, basin, space, region_mouths);
+      for (const auto& basin : basins) keep(out.pockets, basin, space, mouths);
     }
   }
 
@@ -226,18 +228,18 @@ private:
 
   // Appends the cavity of `cells` (sorted, all numbered alike in
   // cavity_of_, within the region of `space`, whose triangles to the
-  // outside are `region_mouths`) if it holds at least min_volume; the
-  // measures that scan all atoms or all mouths are taken only then.
+  // outside are `mouths`) if it holds at least min_volume; the measures
+  // that look at atoms or mouths are taken only then.
   void keep(std::vector<Cavity>& list, const std::vector<Index>& cells, const RegionSpace& space,
-            const std::vector<Index>& region_mouths) const {
+            const NearestTriangle& mouths) const {
     double sa_volume = 0;
     for (Index c : cells) sa_volume += space[c].sa_empty;
     // Fractional shares are exact only in sum: keep the sums, not below 0.
     sa_volume = std::max(0.0, sa_volume);
-    if (sa_volume >= options_.min_volume) list.push_back(build(cells, space, region_mouths, sa_volume));
+    if (sa_volume >= options_.min_volume) list.push_back(build(cells, space, mouths, sa_volume));
   }
 
-  Cavity build(const std::vector<Index>& cells, const RegionSpace& space, const std::vector<Index>& region_mouths,
+  Cavity build(const std::vector<Index>& cells, const RegionSpace& space, const NearestTriangle& mouths,
                double sa_volume) const {
     Cavity cav;
     cav.cells = cells;
@@ -292,22 +294,11 @@ private:
     for (Index c : cells) sealed = std::max(sealed, sealed_from_[c]);
     cav.close_alpha_sq = ac_.spectrum_value(sealed);
 
-    // The largest distance from a cell to its nearest mouth. A cell stops
-    // being searched as soon as some mouth is within the depth so far (it
-    // cannot raise the maximum); the last nearest mouth is tried first, as
-    // cells in id order are near each other.
-    std::size_t hint = 0;
-    for (std::size_t k = 0; k < cells.size() && !region_mouths.empty(); ++k) {
-      const auto distance = [&](std::size_t m) {
-        const auto& fv = s_.triangle(region_mouths[m]);
-        return point_triangle_distance(space[cells[k]].centroid, t_.point(fv[0]), t_.point(fv[1]), t_.point(fv[2]));
-      };
-      double nearest = distance(hint);
-      for (std::size_t m = 0; m < region_mouths.size() && nearest > cav.depth; ++m) {
-        const double d = distance(m);
-        if (d < nearest) nearest = d, hint = m;
-      }
-      cav.depth = std::max(cav.depth, nearest);
+    // The largest distance from a cell to its nearest mouth; a cell with a
+    // mouth within the depth so far cannot raise it.
+    for (Index c : cells) {
+      const Vec3& x = space[c].centroid;
+      if (!mouths.empty() && !mouths.within(x, cav.depth)) cav.depth = std::max(cav.depth, mouths.distance(x));
     }
 
     const double r2 = options_.burial_radius * options_.burial_radius;
