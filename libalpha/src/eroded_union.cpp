@@ -226,9 +226,9 @@ public:
       const int parts = int(std::ceil(piece.length / kMaxPiece));
       for (int k = 0; k < parts; ++k) {
         const double begin = piece.begin + piece.length * k / parts, end = piece.begin + piece.length * (k + 1) / parts;
-        // Within 2r of the piece: of its midpoint, a chord 2 rho sin(length / 4) from its ends.
-        const Hood hood = gather(c.o + c.rho * c.radial((begin + end) / 2),
-                                 2 * c.rho * std::sin((end - begin) / 4) + 2 * r_ + tol_);
+        // The piece's points are within r of the arc, whose ends are a chord
+        // 2 rho sin(length / 4) from its midpoint.
+        const Hood hood = gather(c.o + c.rho * c.radial((begin + end) / 2), 2 * c.rho * std::sin((end - begin) / 4) + r_);
         const LayerShare x = arc_piece(hood, c, begin, end);
         out.volume += x.volume;
         out.area += x.area;
@@ -282,7 +282,7 @@ public:
       dir[k] = (1 / norm(d)) * d;
     }
     const SphericalTriangle cone(dir);
-    const Hood hood = gather(vx.p, 2 * r_ + tol_);
+    const Hood hood = gather(vx.p, r_);
     const auto clear_at_r = [&](double s, double sigma) {
       return clear(hood, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
     };
@@ -331,35 +331,89 @@ private:
   const Triangulation& t_;
   const Simplices& s_;
   double r_, tol_;
+  mutable std::array<Hood, 8> rows_;  // arc_piece's, per node phi (kept: no allocation per piece)
 
   std::span<const Arc> edge_arcs(Index e) const {
     return {eu_.arcs_.data() + eu_.arc_start_[e], eu_.arcs_.data() + eu_.arc_start_[e + 1]};
   }
 
-  Hood gather(const Vec3& center, double radius) const {
+  // Whether some point of edge e's arcs (circle c) is within `radius` of x.
+  bool near_arcs(Index e, const Circle& c, const Vec3& x, double radius) const {
+    const std::span<const Arc> set = edge_arcs(e);
+    const ArcEnds* ends = eu_.arc_ends_.data() + eu_.arc_start_[e];
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w);
+    const Vec3 perp = y - z * c.w;
+    const double a = dot(perp, c.e1), b = dot(perp, c.e2);
+    const double s = std::sqrt(a * a + b * b);
+    // The circle's point nearest to x, when on an arc (or x on the axis: all are).
+    if (s <= tol_ || contains(set, ends, a, b)) return (s - c.rho) * (s - c.rho) + z * z < radius * radius;
+    // Else an arc's end.
+    for (std::size_t k = 0; k < set.size(); ++k)
+      for (const auto& [cs, sn] : {std::pair{ends[k].cos_begin, ends[k].sin_begin}, {ends[k].cos_end, ends[k].sin_end}}) {
+        const Vec3 d = y - c.rho * (cs * c.e1 + sn * c.e2);
+        if (dot(d, d) < radius * radius) return true;
+      }
+    return false;
+  }
+
+  // Whether clear() can find circle c (of edge e) at a point within
+  // radius - r of x: through a point of its arcs nearer than r to that
+  // point, or, for a circle smaller than r, through its axis.
+  bool circle_near(Index e, const Circle& c, const Vec3& x, double radius) const {
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w), s = norm(y - z * c.w);
+    return (s - c.rho) * (s - c.rho) + z * z < radius * radius && (c.rho < r_ + tol_ || near_arcs(e, c, x, radius));
+  }
+
+  // Whether a point within `reach` of x can be inside ball b.
+  bool ball_near(const Hood::Ball& b, const Vec3& x, double reach) const {
+    return norm(b.c - x) < b.radius + reach + tol_;
+  }
+
+  // What clear() can find or be inside at points within `reach` of `center`.
+  Hood gather(const Vec3& center, double reach) const {
+    const double radius = reach + r_ + tol_;
     Hood h;
-    std::vector<Index> ids;
+    // Balls whose sphere is within radius: the ends of the circles.
     // Buried balls are left out: a point inside one is inside another.
+    std::vector<Index> ids;
     eu_.ball_grid_.visit(center, radius + eu_.max_radius_, [&](Index k) {
       if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + radius && eu_.balls_->ball_areas()[k] > 0)
         ids.push_back(k);
     });
     std::sort(ids.begin(), ids.end());
-    for (Index k : ids) h.balls.push_back({t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNone});
+    for (Index k : ids) {
+      const Hood::Ball b{t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNone};
+      if (ball_near(b, center, reach)) h.balls.push_back(b);
+    }
     for (Index k : ids)
       for (Index e : s_.vertex_edges(k)) {
         const auto& v = s_.edge(e);
         if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
         const Circle c = circle_of(t_, v);
-        const Vec3 y = center - c.o;
-        const double z = dot(y, c.w), s = norm(y - z * c.w);
-        if ((s - c.rho) * (s - c.rho) + z * z < radius * radius) h.circles.emplace_back(e, c);
+        if (circle_near(e, c, center, radius)) h.circles.emplace_back(e, c);
       }
     eu_.vertex_grid_.visit(center, radius, [&](Index v) {
       if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
     });
     std::sort(h.vertices.begin(), h.vertices.end());
     return h;
+  }
+
+  // Into `out`, what of h (gathered for a wider reach) clear() can find or
+  // be inside at points within `reach` of x, in h's order.
+  void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const {
+    const double radius = reach + r_ + 2 * tol_;
+    out.balls.clear();
+    out.circles.clear();
+    out.vertices.clear();
+    for (const Hood::Ball& b : h.balls)
+      if (ball_near(b, x, reach)) out.balls.push_back(b);
+    for (const auto& [e, c] : h.circles)
+      if (circle_near(e, c, x, radius)) out.circles.emplace_back(e, c);
+    for (const std::size_t v : h.vertices)
+      if (norm(eu_.vertices_[v].p - x) < radius) out.vertices.push_back(v);
   }
 
   // Whether p, a point of sphere k, lies on the union's boundary: in k's
@@ -507,14 +561,17 @@ private:
     const double psi_i = std::atan2(c.z_i, c.rho), psi_j = std::atan2(c.z_j, c.rho);
     const std::size_t none = eu_.vertices_.size();
     const auto direction = [&](const Vec3& radial, double psi) { return -std::cos(psi) * radial + std::sin(psi) * c.w; };
-    const auto clear_at_r = [&](const Vec3& radial, double psi) {
-      return clear(h, c.o + c.rho * radial + r_ * direction(radial, psi), r_, none);
+    // Each node phi's points are within r of its circle point q: tested
+    // against the part of the hood near q.
+    const auto clear_at_r = [&](int i, const Vec3& radial, double psi) {
+      return clear(rows_[i], c.o + c.rho * radial + r_ * direction(radial, psi), r_, none);
     };
     std::array<std::array<bool, 8>, 8> at_r;
     bool all_clear = true;
     for (int i = 0; i < 8; ++i) {
       const Vec3 radial = c.radial(node(begin, end, i));
-      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(radial, node(psi_i, psi_j, j))) && all_clear;
+      narrow(h, c.o + c.rho * radial, r_, rows_[i]);
+      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(i, radial, node(psi_i, psi_j, j))) && all_clear;
     }
     if (all_clear)
       return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
@@ -524,7 +581,7 @@ private:
     for (int i = 0; i < 8; ++i) {
       const double w = weight(begin, end, i);
       const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
-      for (const Segment& g : segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(radial, psi); })) {
+      for (const Segment& g : segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(i, radial, psi); })) {
         if (g.holds) {
           out.volume += w * wedge_volume(c.rho, r_, g.lo, g.hi);
           out.area += w * wedge_area(c.rho, r_, g.lo, g.hi);
@@ -532,7 +589,7 @@ private:
         }
         for (int j = 0; j < 8; ++j) {
           const double psi = node(g.lo, g.hi, j);
-          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, std::cos(psi), cut(h, q, direction(radial, psi), none));
+          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, std::cos(psi), cut(rows_[i], q, direction(radial, psi), none));
         }
       }
     }
