@@ -7,7 +7,9 @@
 // (molecule/batch_tables.hpp) are written from the records at the end.
 // A re-run skips the structures whose record matches (same path, content
 // checksum, parameters and version). SIGINT/SIGTERM: no new structure is
-// started, the ones in flight finish, the tables are written.
+// started, the ones in flight finish, the tables are written; a second
+// signal abandons the run at once, leaving no temporary file or directory
+// (apps/interrupt.hpp).
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -188,7 +190,7 @@ private:
       if (!unreadable.empty()) throw molecule::AnalysisError(molecule::FailureKind::BadInput, unreadable);
       const molecule::Analysis analysis = molecule::analyse_content(in.path, content, opt_.analysis);
       log_analysis(analysis, spdlog::level::debug);
-      molecule::PocketOutputDir out((outdir_ / in.id).string(), opt_.analysis.outputs);
+      molecule::PocketOutputDir out((outdir_ / in.id).string(), opt_.analysis.outputs, &temporaries());
       molecule::write_outputs(analysis, out);
       for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
       r.status = "ok";
@@ -217,7 +219,7 @@ private:
       const std::string& status = it->second.status;
       (status == "ok" ? ok : status == "skipped" ? skipped : failed) += 1;
     }
-    molecule::write_batch_tables(outdir_.string(), {records_}, locations);
+    molecule::write_batch_tables(outdir_.string(), {records_}, locations, &temporaries());
     const std::size_t missing = inputs_.size() - locations.size();
     spdlog::info("{} structures: {} ok, {} failed, {} skipped ({} done before){} in {:.1f} s; tables in {}/",
                  inputs_.size(), ok, failed, skipped, resumed_.load(),
@@ -233,7 +235,11 @@ int run_batch(BatchOptions& opt) {
   opt.analysis.max_atoms = opt.max_atoms;
   opt.analysis.outputs = molecule::parse_output_selection(opt.outputs);
   std::vector<molecule::BatchInput> inputs = collect_inputs(opt);  // errors (duplicate ids) before any work
+  if (opt.output_dir.empty()) throw std::runtime_error("'': not an output directory name (empty)");
   std::error_code ec;
+  const fs::path absolute = fs::absolute(opt.output_dir, ec).lexically_normal();
+  if (absolute == absolute.root_path())
+    throw std::runtime_error(opt.output_dir + ": is the root of the file system, not an output directory");
   if (fs::exists(opt.output_dir, ec) && !fs::is_directory(opt.output_dir, ec))
     throw std::runtime_error(opt.output_dir + ": cannot create the output directory: a file of that name exists");
   if (!fs::is_directory(opt.output_dir, ec) && !fs::create_directory(opt.output_dir, ec))
@@ -241,7 +247,7 @@ int run_batch(BatchOptions& opt) {
   const unsigned jobs = opt.jobs ? opt.jobs : std::max(1u, std::thread::hardware_concurrency());
   spdlog::info("{} structures, {} worker{}, outputs {} in {}/", inputs.size(), jobs, jobs == 1 ? "" : "s",
                opt.outputs, opt.output_dir);
-  install_interrupt_handlers();
+  install_interrupt_handlers(2);
   Batch batch(opt, std::move(inputs));
   return batch.run(std::min<std::size_t>(jobs, std::numeric_limits<unsigned>::max()));
 }

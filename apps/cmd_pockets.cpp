@@ -12,13 +12,15 @@
 // then prints a one-screen summary of the best binding sites (pockets and
 // large voids; or, with --json, the report) on stdout.
 //
-// Every file is written whole or not at all (temporary file + rename). The
-// output directory is created first, so that a bad OUTDIR fails at once;
-// it is removed again if the run fails before writing into it.
+// OUTDIR describes one run, whole: it is written as a hidden sibling and
+// swapped in with one rename (molecule/pocket_outputs.hpp), and a bad OUTDIR
+// fails at once, before the work. SIGINT/SIGTERM end the run at once,
+// leaving OUTDIR as it was (or complete) and no temporary behind.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -29,6 +31,7 @@
 #include "alpha/error.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "interrupt.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/batch_inputs.hpp"
 #include "molecule/cavities.hpp"
@@ -44,7 +47,7 @@ namespace fs = std::filesystem;
 
 struct PocketsOptions {
   InputOptions input;  // FILE, --probe and the structure selection
-  std::string output_dir;
+  std::optional<std::string> output_dir;  // -o '' is refused, not the default
   molecule::AnalysisOptions analysis;  // --min-volume, --mesh
   bool json = false;
 };
@@ -171,10 +174,11 @@ int run_pockets(const PocketsOptions& opt) {
   const std::string& file = opt.input.file;
   if (!molecule::is_structure_file(file))
     throw std::runtime_error(file + ": not a structure file (.pdb .ent .cif .mmcif, optionally .gz)");
-  // First of all: a bad OUTDIR fails at once. If anything fails before a
-  // file is written, the directories created here are removed again.
-  const std::string outdir = opt.output_dir.empty() ? default_output_dir(file) : opt.output_dir;
-  molecule::PocketOutputDir out(outdir);
+  // First of all: a bad OUTDIR fails at once (nothing is created before
+  // the outputs are written).
+  const std::string outdir = opt.output_dir ? *opt.output_dir : default_output_dir(file);
+  install_interrupt_handlers(1);
+  molecule::PocketOutputDir out(outdir, {}, &temporaries());
 
   molecule::AnalysisOptions options = opt.analysis;
   options.structure = opt.input.structure;

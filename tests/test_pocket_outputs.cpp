@@ -630,28 +630,41 @@ TEST_CASE("pockets outputs: output directory errors leave nothing behind", "[poc
   CHECK_FALSE(fs::exists(dir / "old/meshes"));
 }
 
-TEST_CASE("pockets outputs: meshes of an earlier run are replaced, other files kept", "[pocket_outputs]") {
+TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are refused", "[pocket_outputs]") {
   const Run& r = the_run();
   TempDir dir;
   fs::create_directories(dir / "out/meshes");
-  for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.obj", "notes.txt", "pocket_1.ply.bak"})
+  for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.obj"})
     std::ofstream(dir / ("out/meshes/" + std::string(name))) << "old";
-  molecule::PocketOutputDir out((dir / "out").string());
+  std::ofstream(dir / "out/tunnels.csv") << "old";
   molecule::PocketRun run = r.run;
   run.mesh_format = "obj";
-  const std::vector<std::string> written = out.write(run);
+  run.paths = nullptr;  // no tunnel files this time
+  const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string()).write(run);
   CHECK(std::count(written.begin(), written.end(), "meshes/molecule.obj") == 1);
-  CHECK_FALSE(fs::exists(dir / "out/meshes/pocket_999.ply"));
-  CHECK_FALSE(fs::exists(dir / "out/meshes/void_1.stl"));
-  CHECK(fs::exists(dir / "out/meshes/notes.txt"));
-  CHECK(fs::exists(dir / "out/meshes/pocket_1.ply.bak"));
-  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
-  CHECK(fs::exists(dir / "out/meshes/pocket_1.obj"));
-  // Every written file is there, and nothing else but the kept ones.
-  std::size_t files = 0;
+  CHECK(std::count(written.begin(), written.end(), "tunnels.csv") == 0);
+  // Exactly the files written, none of the earlier run's, nothing beside.
+  std::vector<std::string> files;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
-    files += e.is_regular_file();
-  CHECK(files == written.size() + 2);
+    if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir / "out").string());
+  std::vector<std::string> expected = written;
+  std::sort(files.begin(), files.end());
+  std::sort(expected.begin(), expected.end());
+  CHECK(files == expected);
+  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
+  CHECK(dir.files() == std::vector<std::string>{"out"});
+
+  // Anything else in it (a file of another name, a directory where a file
+  // of ours goes) is refused, before and after the work, naming it.
+  std::ofstream(dir / "out/meshes/notes.txt") << "mine";
+  CHECK_THROWS_WITH(molecule::PocketOutputDir((dir / "out").string()),
+                    Catch::Contains("holds files that are not alphapocket outputs ('meshes/notes.txt')"));
+  fs::remove(dir / "out/meshes/notes.txt");
+  molecule::PocketOutputDir out((dir / "out").string());
+  fs::create_directory(dir / "out/report.json.d");
+  CHECK_THROWS_WITH(out.write(run), Catch::Contains("('report.json.d')"));
+  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
+  CHECK(dir.files() == std::vector<std::string>{"out"});
 }
 
 TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was", "[pocket_outputs]") {
@@ -659,7 +672,7 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
   TempDir dir;
   molecule::PocketOutputDir out((dir / "out").string());
   out.write(r.run);
-  // The last file to be made cannot be written: a directory of its name.
+  // A directory where a file of ours goes appears while the run works.
   fs::remove(dir / "out/meshes/molecule.ply");
   fs::create_directory(dir / "out/meshes/molecule.ply");
   std::map<std::string, std::string> before;
@@ -667,11 +680,12 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
     if (e.is_regular_file()) before[e.path().string()] = testing::read_text(e.path());
   molecule::PocketRun other = r.run;
   other.version = "other";
-  CHECK_THROWS_WITH(out.write(other), Catch::Contains("molecule.ply: is a directory"));
+  CHECK_THROWS_WITH(out.write(other), Catch::Contains("meshes/molecule.ply"));
   std::map<std::string, std::string> after;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) after[e.path().string()] = testing::read_text(e.path());
-  CHECK(after == before);  // no file of the new run, no temporary file left
+  CHECK(after == before);  // no file of the new run
+  CHECK(dir.files() == std::vector<std::string>{"out"});  // no hidden sibling left
 }
 
 TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot hold", "[pocket_outputs]") {

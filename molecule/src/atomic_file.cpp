@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -40,7 +39,9 @@ void check_can_create(const std::string& path) {
   if (::access(dir.c_str(), W_OK | X_OK) != 0) fail_to_create(path, errno);
 }
 
-TemporaryFile::TemporaryFile(const std::string& target) : target_(target) {
+TemporaryFile::TemporaryFile(const std::string& target, TemporaryPaths* temporaries)
+    : target_(target), temporaries_(temporaries) {
+  const auto lock = hold();
   const fs::path p(target);
   const fs::path dir = directory_of(target);
   std::random_device rd;
@@ -56,6 +57,7 @@ TemporaryFile::TemporaryFile(const std::string& target) : target_(target) {
     if (fd >= 0) {
       ::close(fd);
       path_ = candidate.string();
+      if (temporaries_) temporaries_->add(path_);
       return;
     }
     if (errno != EEXIST) fail_to_create(target, errno);
@@ -64,13 +66,22 @@ TemporaryFile::TemporaryFile(const std::string& target) : target_(target) {
 }
 
 TemporaryFile::~TemporaryFile() {
-  if (!path_.empty()) ::unlink(path_.c_str());
+  if (path_.empty()) return;
+  const auto lock = hold();
+  ::unlink(path_.c_str());
+  if (temporaries_) temporaries_->erase(path_);
+}
+
+std::unique_lock<std::mutex> TemporaryFile::hold() const {
+  return temporaries_ ? temporaries_->hold() : std::unique_lock<std::mutex>();
 }
 
 // No fsync: rename already keeps readers and crashed runs from seeing half a
 // file, and a flush per file would dominate batch runs writing dozens each.
 void TemporaryFile::commit() {
+  const auto lock = hold();
   if (::rename(path_.c_str(), target_.c_str()) != 0) alpha::fail(target_ + ": cannot create: " + std::strerror(errno));
+  if (temporaries_) temporaries_->erase(path_);
   path_.clear();
 }
 
@@ -88,12 +99,6 @@ void fill(const TemporaryFile& tmp, const std::string& path, std::string_view co
 }
 
 }  // namespace
-
-void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
-  std::deque<TemporaryFile> staged;  // never moved: a deque does not relocate
-  for (const auto& [path, content] : files) fill(staged.emplace_back(path), path, content);
-  for (TemporaryFile& tmp : staged) tmp.commit();
-}
 
 void write_file_atomically(const std::string& path, std::string_view content) {
   TemporaryFile tmp(path);

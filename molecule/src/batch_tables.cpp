@@ -70,9 +70,10 @@ std::string csv_value(const json& v, bool tsv) {
 // One table's output: its text file and its prepared INSERT.
 class TableWriter {
 public:
-  TableWriter(const Table& table, const fs::path& dir, sqlite3* db)
+  TableWriter(const Table& table, const fs::path& dir, sqlite3* db, TemporaryPaths* temporaries)
       : table_(table), tsv_(&table == &kFailures),
-        target_((dir / (std::string(table.name) + (tsv_ ? ".tsv" : ".csv"))).string()), tmp_(target_), db_(db) {
+        target_((dir / (std::string(table.name) + (tsv_ ? ".tsv" : ".csv"))).string()), tmp_(target_, temporaries),
+        db_(db) {
     out_.open(tmp_.path(), std::ios::binary | std::ios::trunc);
     if (!out_) alpha::fail(target_ + ": cannot write " + tmp_.path() + ": " + std::strerror(errno));
     std::string create = "CREATE TABLE " + std::string(table.name) + " (";
@@ -195,10 +196,11 @@ std::map<std::string, RecordLocation> index_records(const std::vector<std::strin
 }
 
 void write_batch_tables(const std::string& outdir, const std::vector<std::string>& files,
-                        const std::vector<std::pair<std::string, RecordLocation>>& locations) {
+                        const std::vector<std::pair<std::string, RecordLocation>>& locations,
+                        TemporaryPaths* temporaries) {
   const fs::path dir(outdir);
   const std::string db_target = (dir / "alphapocket.sqlite").string();
-  TemporaryFile db_tmp(db_target);
+  TemporaryFile db_tmp(db_target, temporaries);
   sqlite3* db = nullptr;
   if (sqlite3_open(db_tmp.path().c_str(), &db) != SQLITE_OK) {
     sqlite3_close(db);
@@ -210,14 +212,14 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
     sqlite_fail(db, db_target);
   std::vector<std::unique_ptr<TableWriter>> tables;
   for (const Table* t : {&kStructures, &kSites, &kTunnels, &kFailures})
-    tables.push_back(std::make_unique<TableWriter>(*t, dir, db));
+    tables.push_back(std::make_unique<TableWriter>(*t, dir, db, temporaries));
   TableWriter& structures = *tables[0];
   TableWriter& sites = *tables[1];
   TableWriter& tunnels = *tables[2];
   TableWriter& failures = *tables[3];
 
   const std::string records_target = (dir / kRecordsFile).string();
-  TemporaryFile records_tmp(records_target);
+  TemporaryFile records_tmp(records_target, temporaries);
   std::ofstream records(records_tmp.path(), std::ios::binary | std::ios::trunc);
   std::vector<std::ifstream> in;
   for (const std::string& f : files) in.emplace_back(f, std::ios::binary);

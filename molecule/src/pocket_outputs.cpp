@@ -1,11 +1,16 @@
 #include "molecule/pocket_outputs.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <regex>
 #include <system_error>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "alpha/error.hpp"
-#include "molecule/atomic_file.hpp"
+#include "molecule/staged_directory.hpp"
 #include "molecule/cavity_mesh.hpp"
 #include "molecule/mesh_export.hpp"
 #include "molecule/pocket_colors.hpp"
@@ -39,34 +44,101 @@ OutputSelection parse_output_selection(const std::string& list) {
   return s;
 }
 
-PocketOutputDir::PocketOutputDir(const std::string& path, const OutputSelection& selection)
-    : path_(path), selection_(selection) {
-  std::error_code ec;
-  if (fs::exists(path_, ec) && !fs::is_directory(path_, ec))
-    alpha::fail(path + ": cannot create the output directory: a file of that name exists");
-  create(path_);
-  check_can_create((path_ / "report.json").string());
-  if (selection_.meshes) {
-    create(path_ / "meshes");
-    check_can_create((path_ / "meshes" / "molecule.ply").string());
-  }
+namespace {
+
+constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif",
+                                     "pockets.pdb", "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"};
+
+bool is_our_mesh(const std::string& name) {
+  static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
+  return std::regex_match(name, kOurs);
 }
 
-PocketOutputDir::~PocketOutputDir() {
-  if (written_) return;
-  for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
+// The entries of dir that no run of ours writes (at most `max`, sorted):
+// a regular file of one of our names, meshes/ and our meshes in it are ours.
+std::vector<std::string> foreign_entries(const fs::path& dir, std::size_t max) {
+  std::vector<std::string> foreign;
+  const auto check = [&](const fs::path& d, const std::string& prefix, const auto& ours) {
     std::error_code ec;
-    fs::remove(*it, ec);  // removes only an empty directory
-  }
+    for (const auto& e : fs::directory_iterator(d, ec)) {
+      const std::string name = e.path().filename().string();
+      std::error_code type_ec;
+      if (e.is_symlink(type_ec) || !ours(e, name)) foreign.push_back(prefix + name);
+    }
+  };
+  check(dir, "", [&](const fs::directory_entry& e, const std::string& name) {
+    std::error_code ec;
+    if (name == "meshes" && e.is_directory(ec)) {
+      check(e.path(), "meshes/", [](const fs::directory_entry& m, const std::string& mesh) {
+        std::error_code mec;
+        return m.is_regular_file(mec) && is_our_mesh(mesh);
+      });
+      return true;
+    }
+    return e.is_regular_file(ec) && std::find(std::begin(kOurFiles), std::end(kOurFiles), name) != std::end(kOurFiles);
+  });
+  std::sort(foreign.begin(), foreign.end());
+  if (foreign.size() > max) foreign.resize(max);
+  return foreign;
 }
 
-void PocketOutputDir::create(const fs::path& dir) {
+[[noreturn]] void refuse(const std::string& name, const std::string& why) {
+  alpha::fail(name + ": " + why);
+}
+
+// The directory `name` names, absolute and without a trailing '/', through
+// a symbolic link; refuses what must not become an output directory.
+fs::path output_target(const std::string& name) {
+  if (name.empty()) refuse("''", "not an output directory name (empty)");
   std::error_code ec;
-  if (fs::is_directory(dir, ec)) return;
-  if (!fs::create_directory(dir, ec))
-    alpha::fail(dir.string() + ": cannot create the output directory: " +
-                (ec ? ec.message() : std::string("a file of that name exists")));
-  created_.push_back(dir);
+  fs::path target = fs::absolute(name, ec).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();
+  if (fs::is_symlink(target, ec)) {
+    const fs::path to = fs::read_symlink(target, ec);
+    if (!fs::exists(target, ec))
+      refuse(name, "is a symbolic link to " + to.string() + ", which does not exist; remove the link or create " +
+                       to.string());
+    target = fs::canonical(target, ec);
+  }
+  if (target == target.root_path()) refuse(name, "is the root of the file system, not an output directory");
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+    refuse(name, "cannot create the output directory: a file of that name exists");
+  if (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0)
+    refuse(name, "cannot write into the output directory: " + std::string(std::strerror(errno)));
+  const fs::path parent = target.parent_path();
+  struct stat parent_st {};
+  if (::stat(parent.c_str(), &parent_st) != 0 || !S_ISDIR(parent_st.st_mode))
+    refuse(name, "cannot create the output directory: " + parent.string() + " is not a directory");
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    refuse(name, "cannot create the output directory in " + parent.string() + ": " + std::strerror(errno));
+  struct stat st {};
+  if (::stat(target.c_str(), &st) == 0 && st.st_dev != parent_st.st_dev)
+    refuse(name, "is a mount point: write into a directory inside it");
+  const fs::path cwd = fs::current_path(ec);
+  if (!ec && fs::exists(target, ec)) {
+    const fs::path here = fs::canonical(cwd, ec);
+    const auto [end, _] = std::mismatch(target.begin(), target.end(), here.begin(), here.end());
+    if (end == target.end()) refuse(name, "is the current directory or holds it; name a directory for the results");
+  }
+  return target;
+}
+
+}  // namespace
+
+PocketOutputDir::PocketOutputDir(const std::string& path, const OutputSelection& selection,
+                                 TemporaryPaths* temporaries)
+    : path_(path), selection_(selection), target_(output_target(path)), temporaries_(temporaries) {
+  check_ours();
+}
+
+void PocketOutputDir::check_ours() const {
+  const std::vector<std::string> foreign = foreign_entries(target_, 4);
+  if (!foreign.empty()) {
+    std::string list;
+    for (const std::string& f : foreign) list += (list.empty() ? "'" : ", '") + f + "'";
+    refuse(path_.string(), "holds files that are not alphapocket outputs (" + list +
+                               "); they would be removed: choose a new or empty directory");
+  }
 }
 
 std::vector<std::string> PocketOutputDir::write(const PocketRun& run) { return write(run, pocket_report(run)); }
@@ -122,53 +194,25 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     mesh_file(molecule_mesh_path(run.mesh_format), molecule_mesh(ac));
   }
 
+  check_ours();  // again: files may have appeared while the run worked
+  StagedDirectory staged(target_, path_.string(), temporaries_);
   std::vector<std::string> written;
-  for (auto& [name, content] : files) {
+  for (const auto& [name, content] : files) {
+    staged.write(name, content);
     written.push_back(name);
-    name = (path_ / name).string();
   }
-  write_files_atomically(files);
-  written_ = true;
-  remove_stale(written);
+  staged.commit();
   return written;
-}
-
-namespace {
-
-// Removes the files of ours in dir that are not among `written`, and
-// meshes/ if that leaves it empty and keep_meshes_dir is false.
-void remove_ours(const fs::path& dir, const std::vector<std::string>& written, bool keep_meshes_dir) {
-  const auto is_written = [&](const std::string& name) {
-    return std::find(written.begin(), written.end(), name) != written.end();
-  };
-  for (const char* name : {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif", "pockets.pdb",
-                           "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"}) {
-    std::error_code rm;
-    if (!is_written(name)) fs::remove(dir / name, rm);
-  }
-  static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir / "meshes", ec)) {
-    const std::string name = entry.path().filename().string();
-    if (!std::regex_match(name, kOurs)) continue;
-    if (is_written("meshes/" + name)) continue;
-    std::error_code rm;
-    fs::remove(entry.path(), rm);
-  }
-  if (!keep_meshes_dir) fs::remove(dir / "meshes", ec);  // only when empty
-}
-
-}  // namespace
-
-void PocketOutputDir::remove_stale(const std::vector<std::string>& written) const {
-  remove_ours(path_, written, selection_.meshes);
 }
 
 void remove_pocket_outputs(const std::string& path) {
   std::error_code ec;
   if (!fs::is_directory(path, ec)) return;
-  remove_ours(path, {}, false);
-  fs::remove(path, ec);  // only when empty
+  for (const char* name : kOurFiles) fs::remove(fs::path(path) / name, ec);
+  for (const auto& entry : fs::directory_iterator(fs::path(path) / "meshes", ec))
+    if (is_our_mesh(entry.path().filename().string())) fs::remove(entry.path(), ec);
+  fs::remove(fs::path(path) / "meshes", ec);  // only when empty
+  fs::remove(path, ec);
 }
 
 }  // namespace molecule

@@ -234,6 +234,21 @@ case "$case_name" in
     [[ $rc -eq 3 ]] || fail "exit code $rc on the re-run"
     same_tables "$tmp/whole" "$tmp/o"
     ;;
+  outdir_refused)
+    # -o '' (not "no -o") and a file system root are refused before any work.
+    run batch "$pdb" -o ''
+    expect_error "'': not an output directory name (empty)"
+    run batch "$pdb" -o /
+    expect_error "/: is the root of the file system"
+    # A structure's directory holding other files: that structure fails,
+    # its files are kept.
+    mkdir -p "$tmp/o/1a26A"
+    echo "mine" >"$tmp/o/1a26A/notes.txt"
+    run -q batch "$pdb" -o "$tmp/o"
+    [[ $rc -eq 4 ]] || fail "exit code $rc"
+    grep -q "holds files that are not alphapocket outputs ('notes.txt')" "$tmp/o/failures.tsv" || fail "not in failures.tsv"
+    [[ $(cat "$tmp/o/1a26A/notes.txt") == mine ]] || fail "notes.txt changed"
+    ;;
   interrupt_twice)
     # A second signal abandons the structures in flight at once: exit 130,
     # no file half-written, and a re-run completes the tables.
@@ -254,6 +269,7 @@ case "$case_name" in
     [[ $rc -eq 130 ]] || fail "exit code $rc after two SIGINTs, expected 130"
     [[ ! -e "$tmp/o/structures.csv" ]] || fail "tables written: the second signal did not abandon the run"
     for f in "$tmp/o"/*/report.json; do grep -q '^}$' "$f" || fail "$f is incomplete"; done
+    [[ -z $(find "$tmp/o" -name '.*') ]] || fail "temporaries left: $(find "$tmp/o" -name '.*')"
     run -q batch "$tmp/in" -o "$tmp/o" -j 2
     expect_success
     same_tables "$tmp/whole" "$tmp/o"

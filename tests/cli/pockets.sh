@@ -150,6 +150,67 @@ case "$case_name" in
     expect_error "$tmp/locked/o" 'Permission denied'
     [[ -z $(tree_of "$tmp/locked/o") ]] || fail "files left: $(tree_of "$tmp/locked/o")"
     ;;
+  outdir_empty_name)
+    cd "$tmp"
+    run pockets "$pdb" -o ''
+    expect_error "'': not an output directory name (empty)"
+    [[ $(tree_of "$tmp") == "err out" ]] || fail "files left: $(tree_of "$tmp")"
+    ;;
+  outdir_root)
+    run pockets "$pdb" -o /
+    expect_error "/: is the root of the file system"
+    run pockets "$pdb" -o /tmp/..
+    expect_error "/tmp/..: is the root of the file system"
+    ;;
+  outdir_foreign_files)
+    # The input's own folder, and a folder of another tool's results: refused
+    # (the swap would remove their files), and left as they were.
+    mkdir "$tmp/in" "$tmp/fpocket"
+    cp "$pdb" "$tmp/in/x.pdb"
+    run pockets "$tmp/in/x.pdb" -o "$tmp/in"
+    expect_error "$tmp/in: holds files that are not alphapocket outputs ('x.pdb')"
+    [[ $(tree_of "$tmp/in") == "x.pdb" ]] || fail "the input's folder changed: $(tree_of "$tmp/in")"
+    echo "HETATM" >"$tmp/fpocket/x_out.pdb"
+    mkdir "$tmp/fpocket/meshes"
+    echo "old" >"$tmp/fpocket/meshes/pocket_1.ply"
+    echo "notes" >"$tmp/fpocket/meshes/notes.txt"
+    run pockets "$pdb" -o "$tmp/fpocket"
+    expect_error "$tmp/fpocket: holds files that are not alphapocket outputs ('meshes/notes.txt', 'x_out.pdb')"
+    [[ $(cat "$tmp/fpocket/meshes/pocket_1.ply") == old ]] || fail "a file was changed"
+    [[ $(echo $(ls -A "$tmp")) == "err fpocket in out" ]] || fail "left beside it: $(ls -A "$tmp")"
+    ;;
+  outdir_current)
+    mkdir "$tmp/here"
+    cd "$tmp/here"
+    run pockets "$pdb" -o .
+    expect_error ".: is the current directory or holds it"
+    [[ -z $(ls -A "$tmp/here") ]] || fail "files written: $(ls -A "$tmp/here")"
+    ;;
+  outdir_symlink)
+    # A link to nothing is named as such; a link to a directory is followed.
+    ln -s "$tmp/nowhere" "$tmp/dangling"
+    run pockets "$pdb" -o "$tmp/dangling"
+    expect_error "$tmp/dangling: is a symbolic link to $tmp/nowhere, which does not exist"
+    [[ ! -e "$tmp/nowhere" ]] || fail "the link's target was created"
+    mkdir "$tmp/real"
+    ln -s "$tmp/real" "$tmp/link"
+    run -q pockets "$pdb" -o "$tmp/link"
+    expect_success
+    [[ -L "$tmp/link" && -f "$tmp/real/report.json" ]] || fail "the link was not followed"
+    ;;
+  outdir_replaced)
+    # A second run replaces the first one's directory whole: its meshes of
+    # another format and the pockets it no longer finds are gone.
+    run -q pockets "$pdb" -o "$tmp/o" --mesh ply
+    expect_success
+    run -q pockets "$pdb" -o "$tmp/o" --mesh obj --min-volume 30
+    expect_success
+    [[ -z $(find "$tmp/o" -name '*.ply') ]] || fail "meshes of the first run left"
+    mv "$tmp/o" "$tmp/second"
+    run -q pockets "$pdb" -o "$tmp/o" --mesh obj --min-volume 30
+    diff -r "$tmp/o" "$tmp/second" >/dev/null || fail "the replaced directory differs from a fresh one"
+    [[ $(echo $(ls -A "$tmp")) == "err o out second" ]] || fail "left beside it: $(ls -A "$tmp")"
+    ;;
   usage_errors)
     for args in "--probe -1" "--probe nan" "--probe 1e10" "--model 0" "--min-volume -5" "--mesh vrml" "--weighted" ""; do
       # shellcheck disable=SC2086

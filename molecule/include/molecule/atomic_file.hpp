@@ -8,8 +8,8 @@
 #pragma once
 #include <string>
 #include <string_view>
-#include <utility>
-#include <vector>
+
+#include "molecule/temporary_paths.hpp"
 
 namespace molecule {
 
@@ -19,10 +19,11 @@ namespace molecule {
 void check_can_create(const std::string& path);
 
 // A new, empty file next to target (".<name>.<random>.tmp"); removed again
-// when this object dies before commit() moved it into place.
+// when this object dies before commit() moved it into place. With
+// `temporaries`, registered there while it exists.
 class TemporaryFile {
 public:
-  explicit TemporaryFile(const std::string& target);
+  explicit TemporaryFile(const std::string& target, TemporaryPaths* temporaries = nullptr);
   ~TemporaryFile();
   TemporaryFile(const TemporaryFile&) = delete;
   TemporaryFile& operator=(const TemporaryFile&) = delete;
@@ -34,15 +35,12 @@ public:
 
 private:
   std::string target_, path_;
+  TemporaryPaths* temporaries_;
+
+  std::unique_lock<std::mutex> hold() const;
 };
 
 // Writes content to path through a TemporaryFile.
 void write_file_atomically(const std::string& path, std::string_view content);
-
-// Writes several files (path, content) as one: every content goes to its
-// temporary file first, and only once all are complete are they renamed
-// into place, in order. A failure before that leaves every target as it
-// was (only a failed rename, after the others, could leave some renamed).
-void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace molecule

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "molecule/batch_record.hpp"
+#include "molecule/temporary_paths.hpp"
 
 namespace molecule {
 
@@ -58,8 +59,10 @@ std::map<std::string, RecordLocation> index_records(const std::vector<std::strin
 
 // Writes the tables into outdir from the records at `locations` (read from
 // `files`), in the order given (sorted by id), and the records file itself
-// again, compacted to those records.
+// again, compacted to those records. With `temporaries`, the temporary
+// files are registered there.
 void write_batch_tables(const std::string& outdir, const std::vector<std::string>& files,
-                        const std::vector<std::pair<std::string, RecordLocation>>& locations);
+                        const std::vector<std::pair<std::string, RecordLocation>>& locations,
+                        TemporaryPaths* temporaries = nullptr);
 
 }  // namespace molecule

@@ -80,7 +80,7 @@ MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh);
 
 // What write_mesh_file would write to path, in memory (path only chooses
 // the format and names the file in errors), and what it would return. For
-// callers that write several files as one (write_files_atomically).
+// callers that write several files as one (a StagedDirectory).
 struct MeshFileContent {
   std::string bytes;
   MeshFileInfo info;

@@ -13,20 +13,25 @@
 //   tunnels.pdb   the tunnels and pores (tunnel_pdb)
 //
 // Which of them are written (OutputSelection: all by default, batch
-// writes only the report); files of these names that this run does not
-// write are removed.
+// writes only the report).
 //
-// The files appear all together or not at all: all are made in memory,
-// then written through write_files_atomically. Mesh files of an earlier
-// run in meshes/ that this run does not write again (it found fewer
-// cavities, or wrote another format) are removed, so the directory always
-// describes one run; only names of the form above are touched.
+// The directory describes one run, whole: the files are made in memory,
+// written into a hidden sibling and swapped in with one rename
+// (StagedDirectory), which replaces the earlier run's directory. So an
+// existing directory must hold nothing but such files (or nothing): any
+// other entry, e.g. the input structure or another tool's files, is
+// refused, as are an empty name, the root of a file system, a mount point,
+// the current directory (or one holding it) and a symbolic link to nothing.
+// A symbolic link to a directory is followed; the directory replaced is a
+// new one (its own permissions and owner are not kept). Nothing is created
+// before write().
 #pragma once
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "molecule/pocket_report.hpp"
+#include "molecule/temporary_paths.hpp"
 
 namespace molecule {
 
@@ -42,37 +47,32 @@ OutputSelection parse_output_selection(const std::string& list);
 
 class PocketOutputDir {
 public:
-  // Creates the directory and its meshes/ subdirectory where missing and
-  // checks that files can be created there; throws alpha::Error with one
-  // line naming the directory otherwise.
-  explicit PocketOutputDir(const std::string& path, const OutputSelection& selection = {});
-  // Removes the directories the constructor created if no file was written
-  // into them (the run failed before writing).
-  ~PocketOutputDir();
-  PocketOutputDir(const PocketOutputDir&) = delete;
-  PocketOutputDir& operator=(const PocketOutputDir&) = delete;
+  // Checks that `path` may become the output directory (above); throws
+  // alpha::Error with one line naming it otherwise. Creates nothing. With
+  // `temporaries`, write()'s hidden sibling is registered there.
+  explicit PocketOutputDir(const std::string& path, const OutputSelection& selection = {},
+                           TemporaryPaths* temporaries = nullptr);
 
   const std::filesystem::path& path() const { return path_; }
   // What the last write() could not put in the files, one line each (e.g.
   // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
-  // Writes the selected files. Returns the names written, relative to the
-  // directory.
+  // Writes the selected files, replacing the directory. Returns the names
+  // written, relative to the directory.
   std::vector<std::string> write(const PocketRun& run);
   // The same with report.json from `report` (pocket_report(run), built
   // once by a caller that also prints it).
   std::vector<std::string> write(const PocketRun& run, const nlohmann::ordered_json& report);
 
 private:
-  std::filesystem::path path_;
+  std::filesystem::path path_;    // as given
   OutputSelection selection_;
-  std::vector<std::filesystem::path> created_;
-  bool written_ = false;
+  std::filesystem::path target_;  // absolute, through a symbolic link
+  TemporaryPaths* temporaries_;
   std::vector<std::string> warnings_;
 
-  void create(const std::filesystem::path& dir);
-  void remove_stale(const std::vector<std::string>& written) const;
+  void check_ours() const;
 };
 
 // Removes the files of an earlier run from directory `path` (only names of
