@@ -75,6 +75,12 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
           ->type_name("P")
           ->check(finite_number(0, 100))
           ->group(group),
+      sub.add_option("--max-input-mb", selection.max_input_mib,
+                     "Largest structure file read, MiB, after gzip decompression (a bound on memory)")
+          ->capture_default_str()
+          ->type_name("MB")
+          ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20))
+          ->group(group),
   };
 }
 

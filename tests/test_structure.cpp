@@ -174,9 +174,9 @@ std::string error_of(const std::string& path, const StructureOptions& opt = {}) 
 }
 
 // The same for the bytes of a file.
-std::string parse_error(std::string_view bytes, const std::string& name) {
+std::string parse_error(std::string_view bytes, const std::string& name, const StructureOptions& options = {}) {
   try {
-    molecule::parse_structure(bytes, name);
+    molecule::parse_structure(bytes, name, options);
   } catch (const molecule::StructureError& e) {
     return e.what();
   }
@@ -432,7 +432,7 @@ TEST_CASE("structure: an unknown element gets the default radius and one warning
   CHECK(q->element == "X");
   CHECK(q->radius == molecule::kDefaultRadius);
   REQUIRE(s.report.warnings.size() == 1);
-  CHECK(s.report.warnings[0] == "3 atoms of unknown element 'X' (first: atom Q1 of LIG A1) given radius 1.8 A");
+  CHECK(s.report.warnings[0] == "3 atoms of unknown element 'QQ' (on line 5; first: atom Q1 of LIG A1) given radius 1.8 A");
 }
 
 TEST_CASE("structure: warnings count only the kept atoms", "[structure]") {
@@ -462,7 +462,7 @@ TEST_CASE("structure: warnings count only the kept atoms", "[structure]") {
   const Structure h = molecule::parse_structure(pdb, "ligand.pdb", hetero);
   CHECK(h.atoms.size() == 7);
   CHECK(h.report.warnings ==
-        std::vector<std::string>{"2 atoms of unknown element 'X' (first: atom Q1 of LIG A10) given radius 1.8 A"});
+        std::vector<std::string>{"2 atoms of unknown element 'QX' (on line 5; first: atom Q1 of LIG A10) given radius 1.8 A"});
 }
 
 TEST_CASE("structure: PDB coordinates must be numbers", "[structure]") {
@@ -597,7 +597,7 @@ TEST_CASE("structure: structure file names", "[structure]") {
     CHECK_FALSE(molecule::is_structure_file(name));
 }
 
-TEST_CASE("structure: coordinates that are not numbers within 1e6 A name the atom", "[structure]") {
+TEST_CASE("structure: mmCIF coordinates that are not numbers within 1e6 A name the line and the text", "[structure]") {
   const std::string text = file_text(data("1UYD.cif"));
   // The x coordinate of the first atom (" 6.484 " in its row) replaced.
   const auto with_x = [&](const std::string& x) {
@@ -607,10 +607,14 @@ TEST_CASE("structure: coordinates that are not numbers within 1e6 A name the ato
     cif.replace(at, 7, " " + x + " ");
     return cif;
   };
-  const std::string atom = "x.cif: atom 1 (N of GLU A16): coordinate ";
-  CHECK(parse_error(with_x("1e20"), "x.cif").rfind(atom, 0) == 0);
-  CHECK(parse_error(with_x("-2e6"), "x.cif").rfind(atom, 0) == 0);
-  CHECK(parse_error(with_x("?"), "x.cif").rfind(atom + "nan", 0) == 0);
+  const std::string at = "x.cif: line 927: _atom_site.Cartn_x is ";
+  CHECK(parse_error(with_x("1e20"), "x.cif") == at + "'1e20', beyond 1e6 A");
+  CHECK(parse_error(with_x("1e300"), "x.cif") == at + "'1e300', beyond 1e6 A");
+  CHECK(parse_error(with_x("-2e6"), "x.cif") == at + "'-2e6', beyond 1e6 A");
+  CHECK(parse_error(with_x("?"), "x.cif") == at + "'?', unknown: not a coordinate");
+  CHECK(parse_error(with_x("."), "x.cif") == at + "'.', inapplicable: not a coordinate");
+  CHECK(parse_error(with_x("abc"), "x.cif") == at + "'abc', not a number");
+  CHECK(parse_error(with_x("inf"), "x.cif") == at + "'inf', not a number");
   const Structure far = molecule::parse_structure(with_x("999999.0"), "x.cif");
   REQUIRE(find_atom(far.atoms, "A", 16, "N"));
   CHECK(find_atom(far.atoms, "A", 16, "N")->position.x == 999999.0);
@@ -718,4 +722,86 @@ TEST_CASE("structure: atoms alike in identity are ordered by position, whatever 
   REQUIRE(atoms.size() == 5);
   CHECK(atoms[1].position.y == -1.5);  // the two CB by position
   CHECK(atoms[3].position.z == -1);    // the CG kept: the smaller position
+}
+
+TEST_CASE("structure: bad mmCIF values name the line and the text", "[structure]") {
+  const std::string text = file_text(data("1UYD.cif"));
+  // The first atom's row (line 927) with one field replaced.
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string cif = text;
+    const std::size_t at = cif.find(from);
+    REQUIRE(at != std::string::npos);
+    cif.replace(at, from.size(), to);
+    return cif;
+  };
+  const std::string row = "ATOM   1    N  N   . GLU A 1 16  ? 6.484   28.442 39.441 1.00 52.44 ? 16   GLU";
+  const auto error = [&](const std::string& from, const std::string& to) {
+    std::string changed = row;
+    REQUIRE(changed.find(from) != std::string::npos);
+    changed.replace(changed.find(from), from.size(), to);
+    return parse_error(with(row, changed), "x.cif");
+  };
+  CHECK(error(" . GLU", " VAL GLU") == "x.cif: line 927: _atom_site.label_alt_id is 'VAL', not a single character");
+  CHECK(error("52.44 ?", "52.44 1E") == "x.cif: line 927: _atom_site.pdbx_formal_charge is '1E', not an integer");
+  CHECK(error("? 16   GLU", "? A   GLU") ==
+        "x.cif: line 927: _atom_site.auth_seq_id is 'A', not a residue number (an integer, optionally followed by "
+        "the insertion code)");
+  CHECK(error("16  ? 6.484", "16  AB 6.484") ==
+        "x.cif: line 927: _atom_site.pdbx_PDB_ins_code is 'AB', not a single character");
+
+  // Lines counted through quoted values, comments and text fields.
+  std::string cif = "data_t\n# a comment\nloop_\n";
+  for (const char* tag : {"group_PDB", "id", "type_symbol", "label_atom_id", "label_alt_id", "label_comp_id",
+                          "label_asym_id", "label_seq_id", "pdbx_PDB_ins_code", "Cartn_x", "Cartn_y", "Cartn_z",
+                          "occupancy", "B_iso_or_equiv", "auth_seq_id", "auth_asym_id", "pdbx_PDB_model_num"})
+    cif += std::string("_atom_site.") + tag + "\n";  // lines 4-20
+  cif += "ATOM 1 C \"C1' x\" . ALA A 1 ? 0 0 0 1 10 1 A 1\n";                      // line 21
+  cif += "ATOM 2 C 'C2 # not a comment' . ALA A 1 ? 1 0 0 1 10 1 A 1 # a comment\n";  // line 22
+  cif += "ATOM 3 C\n;C3\n;\n. ALA A 1 ? 0 1 0 1 10 1 A 1\n";                          // lines 23-26
+  cif += "ATOM 4 C C4 . ALA A 1 ? 0 0 abc 1 10 1 A 1\n";                             // line 27
+  CHECK(parse_error(cif, "t.cif") == "t.cif: line 27: _atom_site.Cartn_z is 'abc', not a number");
+}
+
+TEST_CASE("structure: mmCIF without its data_ line and PDB coordinates beyond 1e6 A are named", "[structure]") {
+  const std::string text = file_text(data("1UYD.cif"));
+  const std::string no_data = text.substr(text.find('\n') + 1);  // "data_1UYD" is the first line
+  REQUIRE(text.rfind("data_", 0) == 0);
+  const std::string message = parse_error(no_data, "x.cif");
+  CHECK(message.rfind("x.cif: line ", 0) == 0);
+  CHECK(message.find(": mmCIF without a data_ block (its first line must be data_NAME)") != std::string::npos);
+
+  std::string pdb;
+  for (int i = 0; i < 4; ++i) pdb += pdb_atom("ATOM", i + 1, "CA", ' ', "ALA", 'A', i + 1, 3.8 * i, 0, 0, 1, "C");
+  pdb += pdb_atom("ATOM", 5, "CA", ' ', "ALA", 'A', 5, 0, 0, 0, 1, "C").replace(30, 8, "-9999999");
+  CHECK(parse_error(pdb, "x.pdb") == "x.pdb: line 5: coordinate '-9999999' (columns 31-38) is beyond 1e6 A");
+}
+
+TEST_CASE("structure: files beyond max_input_mib are refused, gzip without inflating the rest", "[structure]") {
+  const std::string text = file_text(data("1UYD.cif"));  // about 0.4 MiB
+  REQUIRE(text.size() < (1u << 20));
+  // 1UYD.cif, then 3 MiB of blanks: 3.4 MiB, gzipped to a few KiB.
+  const std::string padded = text + std::string(3u << 20, ' ');
+  uLongf size = compressBound(uLong(padded.size())) + 64;
+  std::string gz(size, '\0');
+  z_stream z{};
+  REQUIRE(deflateInit2(&z, 9, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) == Z_OK);
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(padded.data()));
+  z.avail_in = uInt(padded.size());
+  z.next_out = reinterpret_cast<Bytef*>(gz.data());
+  z.avail_out = uInt(gz.size());
+  REQUIRE(deflate(&z, Z_FINISH) == Z_STREAM_END);
+  gz.resize(z.total_out);
+  deflateEnd(&z);
+  REQUIRE(gz.size() < 64u << 10);
+
+  StructureOptions small;
+  small.max_input_mib = 2;
+  CHECK(parse_error(gz, "x.cif.gz", small) ==
+        "x.cif.gz: decompresses to more than 2 MiB, the limit for a structure file (a gzip bomb? --max-input-mb "
+        "raises it)");
+  CHECK(parse_error(padded, "x.cif", small) ==
+        "x.cif: is 3 MiB, more than the limit for a structure file of 2 MiB (--max-input-mb raises it)");
+  small.max_input_mib = 4;  // within the limit: read as usual
+  CHECK(molecule::parse_structure(gz, "x.cif.gz", small).atoms.size() ==
+        molecule::parse_structure(text, "x.cif", small).atoms.size());
 }

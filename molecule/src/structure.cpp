@@ -52,6 +52,12 @@ bool is_blank(std::string_view text) {
   return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
 }
 
+std::string_view trimmed(std::string_view text) {
+  const std::size_t begin = text.find_first_not_of(" \t");
+  if (begin == std::string_view::npos) return {};
+  return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
+}
+
 enum class Format { Pdb, Mmcif };
 
 // mmCIF: the first thing after blanks and comments is a data_ block.
@@ -132,11 +138,20 @@ void for_each_line(std::string_view text, Fn fn) {
   }
 }
 
+// Far beyond any structure (the largest assemblies span some 1e4 A), so a
+// coordinate beyond it is a broken file.
+constexpr double kMaxCoordinate = 1e6;
+
+// What the text of an atom record says that gemmi's structure no longer
+// does: the element symbols gemmi does not know (it reads them as X), each
+// with the first line holding it.
+using UnknownElements = std::map<std::string, std::size_t>;
+
 // gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
 // a word, and rejects a bad charge without a line number, so the records it
 // reads are checked here first: those starting with ATOM or HETA in any
 // case, up to an END record. `old_columns`: columns 73-80 are not read.
-void check_pdb_records(std::string_view text, const std::string& name, bool old_columns) {
+void check_pdb_records(std::string_view text, const std::string& name, bool old_columns, UnknownElements& unknown) {
   for_each_line(text, [&](std::size_t line_number, std::string_view line) {
     if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
         (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
@@ -151,6 +166,17 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
     if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
       error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
             std::string(line.substr(30, 24)) + "')");
+    for (std::size_t column = 30; column < 54; column += 8)
+      if (std::fabs(std::strtod(std::string(line.substr(column, 8)).c_str(), nullptr)) > kMaxCoordinate)
+        error("coordinate '" + std::string(line.substr(column, 8)) + "' (columns " + std::to_string(column + 1) +
+              "-" + std::to_string(column + 8) + ") is beyond 1e6 A");
+    // Columns 77-78 as gemmi reads them: an element when either is a letter.
+    if (!old_columns && line.size() > 76 &&
+        (std::isalpha(static_cast<unsigned char>(line[76])) ||
+         (line.size() > 77 && std::isalpha(static_cast<unsigned char>(line[77]))))) {
+      const std::string symbol(trimmed(line.substr(76, 2)));
+      if (gemmi::find_element(symbol.c_str()) == gemmi::El::X) unknown.emplace(symbol, line_number);
+    }
     if (!old_columns && line.size() >= 79 && !is_pdb_charge(line[78], line.size() >= 80 ? line[79] : ' '))
       error("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
             "')");
@@ -184,6 +210,122 @@ std::optional<OldColumns> old_format_columns(std::string_view text) {
     return true;
   });
   return found;
+}
+
+// mmCIF data without its data_ block (gemmi would take the rows for PDB
+// records): the line of the first CIF tag or loop_, before any data_.
+std::optional<std::size_t> cif_without_data_block(std::string_view text) {
+  std::optional<std::size_t> found;
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
+    if (line.starts_with('_') || equals_ci(line.substr(0, 5), "loop_")) found = line_number;
+    return !found && !equals_ci(line.substr(0, 5), "data_");
+  });
+  return found;
+}
+
+// The line of value `index` (row by row) of the loop whose loop_ keyword is
+// on line `loop_line`: the CIF tokens from there counted (the tags, then
+// the values; quoted strings, ;-text fields and comments as CIF has them).
+// gemmi's document keeps the line of a loop, not of its values.
+std::size_t loop_value_line(std::string_view text, std::size_t loop_line, std::size_t tags, std::size_t index) {
+  std::size_t i = 0;
+  for (std::size_t line = 1; line < loop_line && i < text.size(); ++line) i = text.find('\n', i) + 1;
+  std::size_t line = loop_line;
+  const std::size_t wanted = 1 + tags + index;  // loop_ itself first
+  const auto space = [&](std::size_t k) { return std::isspace(static_cast<unsigned char>(text[k])) != 0; };
+  for (std::size_t token = 0; i < text.size();) {
+    if (text[i] == '\n') {
+      ++line;
+      ++i;
+    } else if (space(i)) {
+      ++i;
+    } else if (text[i] == '#') {
+      i = std::min(text.find('\n', i), text.size());
+    } else {
+      const std::size_t start_line = line;
+      if (text[i] == ';' && (i == 0 || text[i - 1] == '\n')) {  // a text field, to a line starting with ';'
+        const std::size_t end = std::min(text.find("\n;", i), text.size());
+        line += std::size_t(std::count(text.begin() + i, text.begin() + end, '\n')) + 1;
+        i = end + 2;
+      } else if (text[i] == '\'' || text[i] == '"') {  // to the same quote before a blank
+        const char quote = text[i++];
+        while (i < text.size() && text[i] != '\n' && !(text[i] == quote && (i + 1 == text.size() || space(i + 1))))
+          ++i;
+        ++i;
+      } else {
+        while (i < text.size() && !space(i)) ++i;
+      }
+      if (token++ == wanted) return start_line;
+    }
+  }
+  return loop_line;
+}
+
+// gemmi converts the _atom_site values it reads (a single character, an
+// integer, a number) without saying where a bad one is, and reads a
+// coordinate that is not a number as NaN, so the loop is checked here
+// first, each bad value named with its line and its text. Unknown element
+// symbols are noted.
+void check_atom_site(const gemmi::cif::Block& block, std::string_view text, const std::string& name,
+                     UnknownElements& unknown) {
+  const gemmi::cif::Item* item = nullptr;
+  for (const gemmi::cif::Item& i : block.items)
+    if (i.type == gemmi::cif::ItemType::Loop && !i.loop.tags.empty() &&
+        equals_ci(std::string_view(i.loop.tags[0]).substr(0, 11), "_atom_site."))
+      item = &i;
+  if (!item) return;
+  const gemmi::cif::Loop& loop = item->loop;
+  const auto column = [&](std::string_view tag) -> std::optional<std::size_t> {
+    std::string lower = "_atom_site.";
+    for (const char c : tag) lower += char(std::tolower(static_cast<unsigned char>(c)));
+    for (std::size_t c = 0; c < loop.tags.size(); ++c)
+      if (equals_ci(loop.tags[c], lower)) return c;
+    return std::nullopt;
+  };
+  const std::size_t width = loop.width();
+  const auto bad = [&](std::size_t row, std::size_t col, const std::string& what) {
+    const std::size_t line = loop_value_line(text, std::size_t(item->line_number), width, row * width + col);
+    fail(name, "line " + std::to_string(line) + ": " + loop.tags[col] + " is '" + loop.values[row * width + col] +
+                   "', " + what);
+  };
+  const std::optional<std::size_t> alt = column("label_alt_id"), icode = column("pdbx_PDB_ins_code"),
+                                   auth_seq = column("auth_seq_id"), label_seq = column("label_seq_id"),
+                                   charge = column("pdbx_formal_charge"), symbol = column("type_symbol");
+  const std::optional<std::size_t> xyz[3] = {column("Cartn_x"), column("Cartn_y"), column("Cartn_z")};
+  for (std::size_t row = 0; row < loop.length(); ++row) {
+    const auto value = [&](std::size_t col) -> const std::string& { return loop.values[row * width + col]; };
+    for (const auto& c : {alt, icode})
+      if (c) try {
+          gemmi::cif::as_char(value(*c), ' ');
+        } catch (const std::exception&) {
+          bad(row, *c, "not a single character");
+        }
+    for (const auto& c : {label_seq, charge})
+      if (c) try {
+          gemmi::cif::as_int(value(*c), 0);
+        } catch (const std::exception&) {
+          bad(row, *c, "not an integer");
+        }
+    if (auth_seq) try {
+        gemmi::impl::make_seqid(value(*auth_seq), icode ? &value(*icode) : nullptr);
+      } catch (const std::exception&) {
+        bad(row, *auth_seq, "not a residue number (an integer, optionally followed by the insertion code)");
+      }
+    for (const auto& c : xyz) {
+      if (!c) continue;
+      const std::string& v = value(*c);
+      const double x = gemmi::cif::as_number(v);
+      if (gemmi::cif::is_null(v))
+        bad(row, *c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
+      if (std::isnan(x)) bad(row, *c, "not a number");
+      if (!(std::fabs(x) <= kMaxCoordinate)) bad(row, *c, "beyond 1e6 A");
+    }
+    if (symbol && !gemmi::cif::is_null(value(*symbol))) {
+      const std::string element = gemmi::cif::as_string(value(*symbol));
+      if (gemmi::find_element(element.c_str()) == gemmi::El::X && !unknown.count(element))
+        unknown.emplace(element, loop_value_line(text, std::size_t(item->line_number), width, row * width + *symbol));
+    }
+  }
 }
 
 std::string join(const std::vector<std::string>& items, std::size_t max_items) {
@@ -227,8 +369,8 @@ bool has_atoms(const gemmi::Structure& st) {
 // *local_plddt: whether an mmCIF file has per-residue model quality
 // (ModelCIF's _ma_qa_metric_local, as AlphaFold DB's files).
 gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name, bool old_columns,
-                                  bool* local_plddt) {
-  if (format == Format::Pdb) check_pdb_records(text, name, old_columns);
+                                  bool* local_plddt, UnknownElements& unknown) {
+  if (format == Format::Pdb) check_pdb_records(text, name, old_columns, unknown);
   gemmi::Structure st;
   std::vector<std::string> missing;
   try {
@@ -238,6 +380,7 @@ gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const st
       st = gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_options);
     } else {
       gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
+      check_atom_site(doc.blocks.at(0), text, name, unknown);
       st = gemmi::make_structure(doc);
       *local_plddt = doc.blocks.at(0).find_mmcif_category("_ma_qa_metric_local.").ok();
       if (!has_atoms(st)) missing = missing_atom_site_columns(doc.blocks.at(0));
@@ -383,11 +526,21 @@ public:
     }
     return r.value;
   }
-  void add_warnings(std::vector<std::string>& warnings) const {
+  // `symbols`: what the file wrote where gemmi read X, with lines.
+  void add_warnings(std::vector<std::string>& warnings, const UnknownElements& symbols) const {
     for (const auto& [element, u] : unknown_) {
+      std::string what = "'" + element + "'", where;
+      if (element == "X" && !symbols.empty()) {
+        what.clear();
+        for (const auto& [symbol, line] : symbols) {
+          what += (what.empty() ? "'" : ", '") + symbol + "'";
+          where += (where.empty() ? "on line " : ", ") + std::to_string(line);
+        }
+        where += "; ";
+      }
       std::ostringstream s;
-      s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element '" << element
-        << "' (first: atom " << describe(u.first) << ") given radius " << kDefaultRadius << " A";
+      s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element " << what << " (" << where
+        << "first: atom " << describe(u.first) << ") given radius " << kDefaultRadius << " A";
       warnings.push_back(s.str());
     }
   }
@@ -415,17 +568,6 @@ Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain
   atom.hetero = r.het_flag == 'H';
   atom.position = {a.pos.x, a.pos.y, a.pos.z};
   return atom;
-}
-
-// Far beyond any structure (the largest assemblies span some 1e4 A), so a
-// coordinate beyond it, "?" or "." read as NaN, is a broken file.
-constexpr double kMaxCoordinate = 1e6;
-
-void check_position(const Atom& a, const std::string& name) {
-  for (const double x : {a.position.x, a.position.y, a.position.z})
-    if (!(std::fabs(x) <= kMaxCoordinate))
-      fail(name, "atom " + std::to_string(a.serial) + " (" + describe(a) + "): coordinate " + std::to_string(x) +
-                     " is not a number within 1e6 A");
 }
 
 int model_number(const gemmi::Model& m) {
@@ -475,7 +617,7 @@ double mean_b_factor(const gemmi::Residue& r) {
 }
 
 Structure select(const gemmi::Structure& st, const StructureOptions& options, const std::string& name,
-                 bool predicted) {
+                 bool predicted, const UnknownElements& unknown) {
   const gemmi::Model& model = select_model(st, options.model, name);
   check_chains(model, options.chains, name);
   Structure out;
@@ -538,7 +680,6 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
             kept = true;
           if (!kept && !in_ligand) continue;
           Atom atom = make_atom(a, res, chain);
-          check_position(atom, name);
           atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
           ligand.kept = ligand.kept || (kept && in_ligand);
@@ -561,7 +702,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   });
   report.kept = out.atoms.size();
   report.hetero_groups = out.hetero_groups.size();
-  radius.add_warnings(report.warnings);
+  radius.add_warnings(report.warnings, unknown);
   if (out.atoms.empty())
     fail(name, "no atoms left after the selection (model " + model.name + " has " +
                    std::to_string(report.atoms_in_model) + " atoms; dropped: " + dropped_list(report) + ")");
@@ -569,6 +710,11 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
     fail(name, "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
                    " after the selection, at least " + std::to_string(options.min_atoms) + " are needed");
   return out;
+}
+
+[[noreturn]] void too_large(const std::string& name, std::uintmax_t bytes, std::size_t max_mib) {
+  fail(name, "is " + std::to_string(bytes >> 20) + " MiB, more than the limit for a structure file of " +
+                 std::to_string(max_mib) + " MiB (--max-input-mb raises it)");
 }
 
 }  // namespace
@@ -579,7 +725,7 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   const bool gzipped = is_gzip(data);
   if (gzipped) {
     try {
-      unzipped = gunzip(data, name);
+      unzipped = gunzip(data, name, options.max_input_mib << 20);
     } catch (const alpha::Error& e) {
       throw StructureError(e.what());
     }
@@ -587,13 +733,17 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   } else if (ends_with_ci(name, ".gz")) {
     fail(name, "not gzip data (no gzip header)");
   }
+  if (data.size() > options.max_input_mib << 20) too_large(name, data.size(), options.max_input_mib);
   if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
+  if (const std::optional<std::size_t> line = cif_without_data_block(data))
+    fail(name, "line " + std::to_string(*line) + ": mmCIF without a data_ block (its first line must be data_NAME)");
   const Format format = detect_format(data, name);
   const std::optional<OldColumns> old = format == Format::Pdb ? old_format_columns(data) : std::nullopt;
   bool local_plddt = false;
-  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value(), &local_plddt);
+  UnknownElements unknown;
+  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value(), &local_plddt, unknown);
   const bool af_name = std::filesystem::path(name).filename().string().rfind("AF-", 0) == 0;
-  Structure out = select(st, options, name, local_plddt || af_name);
+  Structure out = select(st, options, name, local_plddt || af_name, unknown);
   if (old)
     out.report.warnings.insert(out.report.warnings.begin(),
                                "columns 73-80 hold an old-format id code and line number (line " +
@@ -605,6 +755,9 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
 }
 
 Structure read_structure(const std::string& path, const StructureOptions& options) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  if (!ec && size > options.max_input_mib << 20) too_large(path, size, options.max_input_mib);  // not even read
   std::string text;
   try {
     text = alpha::read_input_file(path);

@@ -147,6 +147,39 @@ case $case_name in
     expect_error "$bad/truncated.pdb.gz: truncated gzip data"
     [[ ! -e "$tmp/shape.ply" ]] || fail "a mesh was written"
     ;;
+  gzip_bomb)
+    # 513 MiB of blanks in 0.5 MB of gzip (513 members of 1 MiB each):
+    # refused at the 512 MiB limit, not inflated whole; a smaller
+    # --max-input-mb stops it sooner.
+    head -c $((1 << 20)) /dev/zero | tr '\0' ' ' | gzip -9 >"$tmp/one.gz"
+    for _ in $(seq 513); do cat "$tmp/one.gz"; done >"$tmp/bomb.pdb.gz"
+    run surface "$tmp/bomb.pdb.gz"
+    expect_error "$tmp/bomb.pdb.gz: decompresses to more than 512 MiB" 'max-input-mb raises it'
+    run surface "$tmp/bomb.pdb.gz" --max-input-mb 8
+    expect_error "$tmp/bomb.pdb.gz: decompresses to more than 8 MiB"
+    head -c $((9 << 20)) /dev/zero | tr '\0' ' ' >"$tmp/big.pdb"
+    run surface "$tmp/big.pdb" --max-input-mb 8
+    expect_error "$tmp/big.pdb: is 9 MiB, more than the limit for a structure file of 8 MiB"
+    ;;
+  mmcif_messages)
+    # gemmi's own messages had no line ('Not a single character: VAL',
+    # 'coordinate nan' for ?, inf and abc alike, an unknown element as X).
+    sed '927s/ \. GLU A 1 16 / VAL GLU A 1 16 /' "$data/1UYD.cif" >"$tmp/alt.cif"
+    run surface "$tmp/alt.cif"
+    expect_error "$tmp/alt.cif: line 927: _atom_site.label_alt_id is 'VAL', not a single character"
+    for x in '?' inf abc 1e300; do
+      sed "927s/ 6\.484 / $x /" "$data/1UYD.cif" >"$tmp/x.cif"
+      run surface "$tmp/x.cif"
+      expect_error "$tmp/x.cif: line 927: _atom_site.Cartn_x is '$x', "
+    done
+    tail -n +2 "$data/1UYD.cif" >"$tmp/nodata.cif"
+    run surface "$tmp/nodata.cif"
+    expect_error "$tmp/nodata.cif: line " 'mmCIF without a data_ block'
+    sed '2572s/^HETATM 1646 C  C19 /HETATM 1646 QQ C19 /' "$data/1UYD.cif" >"$tmp/qq.cif"
+    run surface "$tmp/qq.cif" --keep-hetero --sa-only
+    expect_success
+    grep -q "unknown element 'QQ' (on line 2572; first: atom C19 of PU8 A1224)" "$tmp/err" || fail "QQ not named"
+    ;;
   corrupt_gz)
     run delaunay "$bad/corrupt.pdb.gz" --json
     expect_error "$bad/corrupt.pdb.gz: corrupt gzip data"

@@ -69,6 +69,10 @@ struct StructureOptions {
   // Fewer atoms after the selection is an error: a triangulation needs 4
   // (a union of balls, 1).
   std::size_t min_atoms = 4;
+  // A file (after gzip decompression) larger than this, MiB, is an error:
+  // five times the largest PDB entry, and memory stays bounded whatever a
+  // gzip file claims.
+  std::size_t max_input_mib = 512;
 };
 
 struct Atom {
