@@ -36,6 +36,7 @@
 #include "molecule/batch_record.hpp"
 #include "molecule/batch_tables.hpp"
 #include "molecule/checksum.hpp"
+#include "molecule/pocket_outputs.hpp"
 #include "progress.hpp"
 
 namespace alphapocket {
@@ -235,11 +236,8 @@ int run_batch(BatchOptions& opt) {
   opt.analysis.max_atoms = opt.max_atoms;
   opt.analysis.outputs = molecule::parse_output_selection(opt.outputs);
   std::vector<molecule::BatchInput> inputs = collect_inputs(opt);  // errors (duplicate ids) before any work
-  if (opt.output_dir.empty()) throw std::runtime_error("'': not an output directory name (empty)");
+  molecule::output_directory_path(opt.output_dir);  // refuses a root or a link to nothing
   std::error_code ec;
-  const fs::path absolute = fs::absolute(opt.output_dir, ec).lexically_normal();
-  if (absolute == absolute.root_path())
-    throw std::runtime_error(opt.output_dir + ": is the root of the file system, not an output directory");
   if (fs::exists(opt.output_dir, ec) && !fs::is_directory(opt.output_dir, ec))
     throw std::runtime_error(opt.output_dir + ": cannot create the output directory: a file of that name exists");
   if (!fs::is_directory(opt.output_dir, ec) && !fs::create_directory(opt.output_dir, ec))
@@ -268,7 +266,8 @@ Subcommand add_batch_command(CLI::App& app) {
                   "File listing one path per line (# comments; a P2Rank .ds dataset: first column, relative to "
                   "its directory); may be repeated");
   sub->add_option("-o,--output-dir", opt->output_dir, "Directory for the tables and the structures' outputs")
-      ->required();
+      ->required()
+      ->check(output_directory_name());
   sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
   sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes,tunnels")

@@ -222,7 +222,8 @@ Subcommand add_pockets_command(CLI::App& app) {
   sub->add_option("-o,--output-dir", opt->output_dir,
                   "Directory for the results (created if missing; default: <name>_pockets in the current "
                   "directory)")
-      ->type_name("OUTDIR");
+      ->type_name("OUTDIR")
+      ->check(output_directory_name());
   add_cavity_options(*sub, opt->analysis);
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   return {sub, [opt] { return run_pockets(*opt); }};

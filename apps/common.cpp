@@ -126,6 +126,11 @@ CLI::Validator finite_number(double lo, double hi) {
       "");
 }
 
+CLI::Validator output_directory_name() {
+  return CLI::Validator([](std::string& text) { return text.empty() ? "an empty name is not an output directory" : ""; },
+                        "");
+}
+
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options) {
   molecule::Structure structure = molecule::read_structure(file, options);
   spdlog::info("{}: {}", file, molecule::summary(structure.report));

@@ -66,6 +66,8 @@ inline constexpr const char* kAlphaSqHelp =
 inline constexpr double kNoBound = std::numeric_limits<double>::infinity();
 // A finite number within [lo, hi], with a plain message otherwise.
 CLI::Validator finite_number(double lo = -kNoBound, double hi = kNoBound);
+// An output directory name: -o '' is a usage error, not "no -o".
+CLI::Validator output_directory_name();
 
 // The points of a point file, or the atoms of a structure file as
 // weighted points (always: ProtOr radius + probe, molecule::atom_balls),

@@ -86,31 +86,22 @@ std::vector<std::string> foreign_entries(const fs::path& dir, std::size_t max) {
   alpha::fail(name + ": " + why);
 }
 
-// The directory `name` names, absolute and without a trailing '/', through
-// a symbolic link; refuses what must not become an output directory.
+// The output directory `name` as a path (output_directory_path), checked
+// further: what must not be replaced by a run's directory is refused.
 fs::path output_target(const std::string& name) {
-  if (name.empty()) refuse("''", "not an output directory name (empty)");
+  const fs::path target = output_directory_path(name);
   std::error_code ec;
-  fs::path target = fs::absolute(name, ec).lexically_normal();
-  if (!target.has_filename()) target = target.parent_path();
-  if (fs::is_symlink(target, ec)) {
-    const fs::path to = fs::read_symlink(target, ec);
-    if (!fs::exists(target, ec))
-      refuse(name, "is a symbolic link to " + to.string() + ", which does not exist; remove the link or create " +
-                       to.string());
-    target = fs::canonical(target, ec);
-  }
-  if (target == target.root_path()) refuse(name, "is the root of the file system, not an output directory");
   if (fs::exists(target, ec) && !fs::is_directory(target, ec))
     refuse(name, "cannot create the output directory: a file of that name exists");
   if (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0)
     refuse(name, "cannot write into the output directory: " + std::string(std::strerror(errno)));
   const fs::path parent = target.parent_path();
   struct stat parent_st {};
-  if (::stat(parent.c_str(), &parent_st) != 0 || !S_ISDIR(parent_st.st_mode))
-    refuse(name, "cannot create the output directory: " + parent.string() + " is not a directory");
+  if (::stat(parent.c_str(), &parent_st) != 0)
+    refuse(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
+  if (!S_ISDIR(parent_st.st_mode)) refuse(name, "cannot create the output directory: " + std::string(std::strerror(ENOTDIR)));
   if (::access(parent.c_str(), W_OK | X_OK) != 0)
-    refuse(name, "cannot create the output directory in " + parent.string() + ": " + std::strerror(errno));
+    refuse(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
   struct stat st {};
   if (::stat(target.c_str(), &st) == 0 && st.st_dev != parent_st.st_dev)
     refuse(name, "is a mount point: write into a directory inside it");
@@ -124,6 +115,22 @@ fs::path output_target(const std::string& name) {
 }
 
 }  // namespace
+
+fs::path output_directory_path(const std::string& name) {
+  if (name.empty()) refuse("''", "not an output directory name (empty)");
+  std::error_code ec;
+  fs::path target = fs::absolute(name, ec).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();
+  if (fs::is_symlink(target, ec)) {
+    const fs::path to = fs::read_symlink(target, ec);
+    if (!fs::exists(target, ec))
+      refuse(name, "is a symbolic link to " + to.string() + ", which does not exist; remove the link or create " +
+                       to.string());
+    target = fs::canonical(target, ec);
+  }
+  if (target == target.root_path()) refuse(name, "is the root of the file system, not an output directory");
+  return target;
+}
 
 PocketOutputDir::PocketOutputDir(const std::string& path, const OutputSelection& selection,
                                  TemporaryPaths* temporaries)

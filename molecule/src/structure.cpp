@@ -520,6 +520,7 @@ class RadiusAssigner {
 public:
   double operator()(const Atom& a, bool kept) {
     const AtomRadius r = atom_radius(a.residue_name, a.name, a.element);
+    kept_x_ += kept && a.element == "X";
     if (kept && r.source == RadiusSource::Default) {
       Unknown& u = unknown_[a.element];
       if (u.atoms++ == 0 || canonical_less(a, u.first)) u.first = a;
@@ -528,15 +529,19 @@ public:
   }
   // `symbols`: what the file wrote where gemmi read X, with lines.
   void add_warnings(std::vector<std::string>& warnings, const UnknownElements& symbols) const {
+    // "'QQ', 'ZZ'" and "on line 5, 9; ": the symbols gemmi read as X.
+    std::string written, lines;
+    for (const auto& [symbol, line] : symbols) {
+      written += (written.empty() ? "'" : ", '") + symbol + "'";
+      lines += (lines.empty() ? "on line " : ", ") + std::to_string(line);
+    }
+    if (!symbols.empty() && kept_x_ > 0 && !unknown_.count("X"))  // each got a radius from its name
+      warnings.push_back("unknown element " + written + " (" + lines + ") read as X; radii from the atom names");
     for (const auto& [element, u] : unknown_) {
       std::string what = "'" + element + "'", where;
       if (element == "X" && !symbols.empty()) {
-        what.clear();
-        for (const auto& [symbol, line] : symbols) {
-          what += (what.empty() ? "'" : ", '") + symbol + "'";
-          where += (where.empty() ? "on line " : ", ") + std::to_string(line);
-        }
-        where += "; ";
+        what = written;
+        where = lines + "; ";
       }
       std::ostringstream s;
       s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element " << what << " (" << where
@@ -551,6 +556,7 @@ private:
     Atom first;  // in the canonical order
   };
   std::map<std::string, Unknown> unknown_;  // ordered: deterministic warnings
+  std::size_t kept_x_ = 0;                  // kept atoms of element X, whatever their radius
 };
 
 Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain& c) {

@@ -237,7 +237,8 @@ case "$case_name" in
   outdir_refused)
     # -o '' (not "no -o") and a file system root are refused before any work.
     run batch "$pdb" -o ''
-    expect_error "'': not an output directory name (empty)"
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2"
+    grep -q '^ERROR: .*an empty name is not an output directory' "$tmp/err" || fail "no message"
     run batch "$pdb" -o /
     expect_error "/: is the root of the file system"
     # A structure's directory holding other files: that structure fails,

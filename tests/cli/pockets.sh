@@ -151,9 +151,11 @@ case "$case_name" in
     [[ -z $(tree_of "$tmp/locked/o") ]] || fail "files left: $(tree_of "$tmp/locked/o")"
     ;;
   outdir_empty_name)
+    # -o '' is a usage error (was: the default OUTDIR).
     cd "$tmp"
     run pockets "$pdb" -o ''
-    expect_error "'': not an output directory name (empty)"
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2"
+    grep -q '^ERROR: .*an empty name is not an output directory' "$tmp/err" || fail "no message"
     [[ $(tree_of "$tmp") == "err out" ]] || fail "files left: $(tree_of "$tmp")"
     ;;
   outdir_root)

@@ -75,6 +75,11 @@ private:
   void check_ours() const;
 };
 
+// The output directory `name` names: absolute, without a trailing '/',
+// through a symbolic link. Throws alpha::Error with one line naming it for an
+// empty name, a file system root, a symbolic link to nothing.
+std::filesystem::path output_directory_path(const std::string& name);
+
 // Removes the files of an earlier run from directory `path` (only names of
 // the forms above), and the directory itself if that leaves it empty:
 // what a structure that now fails leaves of its outputs.
