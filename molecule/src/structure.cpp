@@ -217,7 +217,7 @@ std::optional<OldColumns> old_format_columns(std::string_view text) {
 std::optional<std::size_t> cif_without_data_block(std::string_view text) {
   std::optional<std::size_t> found;
   for_each_line(text, [&](std::size_t line_number, std::string_view line) {
-    if (line.starts_with('_') || equals_ci(line.substr(0, 5), "loop_")) found = line_number;
+    if ((!line.empty() && line[0] == '_') || equals_ci(line.substr(0, 5), "loop_")) found = line_number;
     return !found && !equals_ci(line.substr(0, 5), "data_");
   });
   return found;
