@@ -338,6 +338,7 @@ std::string join(const std::vector<std::string>& items, std::size_t max_items) {
 // gemmi's messages may span lines and may name the file already.
 std::string one_line(std::string s, const std::string& name) {
   std::replace(s.begin(), s.end(), '\n', ' ');
+  s = printable_ascii(s);  // gemmi quotes the record, bytes and all
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s.find(name) == std::string::npos ? name + ": " + s : s;
 }
