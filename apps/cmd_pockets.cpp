@@ -34,10 +34,12 @@
 #include "interrupt.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/batch_inputs.hpp"
+#include "molecule/atomic_file.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
+#include "molecule/site_features.hpp"
 #include "molecule/structure.hpp"
 
 namespace alphapocket {
@@ -50,6 +52,7 @@ struct PocketsOptions {
   std::optional<std::string> output_dir;  // -o '' is refused, not the default
   molecule::AnalysisOptions analysis;  // --min-volume, --mesh
   bool json = false;
+  std::string features;  // --features FILE: the cavities' model features as CSV
 };
 
 // Sites shown in the summary, and its width in columns.
@@ -92,13 +95,13 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
               cavities.sa_area, cavities.sa_volume);
   std::printf("%s; written to %s/\n", cavity_counts(cavities).c_str(), outdir.c_str());
   if (!sites.empty()) {
-    std::printf("\nsite  cavity         score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
-    const std::size_t prefix = 69;  // columns before the residues
+    std::printf("\nsite  cavity         prob      score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
+    const std::size_t prefix = 76;  // columns before the residues
     for (std::size_t i = 0; i < std::min(sites.size(), kSummaryRows); ++i) {
       const molecule::Site& s = sites[i];
       const molecule::Cavity& c = cavities.cavity(s);
-      std::printf("%4zu  %-10s %9.3g %11.1f %11.1f %8.1f %7zu  %s\n", i + 1, molecule::site_cavity_name(s).c_str(),
-                  c.score, c.sa_volume, c.ms_volume, c.depth, c.mouths.size(),
+      std::printf("%4zu  %-10s %6.3f %10.3g %11.1f %11.1f %8.1f %7zu  %s\n", i + 1,
+                  molecule::site_cavity_name(s).c_str(), c.probability, c.score, c.sa_volume, c.ms_volume, c.depth, c.mouths.size(),
                   residue_list(structure.atoms, c.lining_atoms, kSummaryWidth - prefix).c_str());
     }
     if (sites.size() > kSummaryRows)
@@ -191,6 +194,9 @@ int run_pockets(const PocketsOptions& opt) {
   Stopwatch write_time;
   const std::vector<std::string> written = molecule::write_outputs(analysis, out);
   for (const std::string& warning : out.warnings()) spdlog::warn("{}", warning);
+  if (!opt.features.empty())
+    molecule::write_file_atomically(opt.features,
+                                    molecule::site_features_csv(analysis.structure, analysis.search.cavities));
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 
@@ -226,6 +232,8 @@ Subcommand add_pockets_command(CLI::App& app) {
       ->check(output_directory_name());
   add_cavity_options(*sub, opt->analysis);
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
+  sub->add_option("--features", opt->features,
+                  "Also write every pocket's and void's ligandability-model features to this CSV file (for training/)");
   return {sub, [opt] { return run_pockets(*opt); }};
 }
 

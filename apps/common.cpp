@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -106,6 +107,12 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
       ->check(finite_number())
       ->check(CLI::PositiveNumber.description(""));
   sub.add_flag("--pores", options.tunnels.pores, "Also find pores: paths across the molecule from solvent to solvent");
+  sub.add_option("--ranking", options.ranking,
+                 "Order of the sites: by the ligandability model's probability, or by the geometric score")
+      ->capture_default_str()
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, molecule::SiteRanking>{{"probability", molecule::SiteRanking::probability},
+                                                       {"geometric", molecule::SiteRanking::geometric}}));
 }
 
 CLI::Validator finite_number(double lo, double hi) {
@@ -150,6 +157,7 @@ void log_analysis(const molecule::Analysis& a, spdlog::level::level_enum level) 
     spdlog::warn("{}: {} atoms matched no rule: built-in element radii", a.options.radii_file, a.radius_fallbacks);
   spdlog::log(level, "tunnels and pores: {:.3f} s, {} paths from {} starts", a.tunnels_seconds, a.paths.size(),
               a.tunnel_starts.size());
+  spdlog::log(level, "site features and ligandability: {:.3f} s", a.search.ranking_seconds);
 }
 
 PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms) {

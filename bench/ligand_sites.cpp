@@ -47,6 +47,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -69,12 +70,20 @@ namespace {
 constexpr double kHitDistance = 4.0;   // A, DCC and DCA
 constexpr double kMergeDistance = 1.7; // A, residues of one ligand
 
-// fpocket 4.0 on pockets-dev (the dataset's README).
+// Peers' figures on the datasets (the dataset's README; NaN: not known):
+// fpocket 4.0 measured on pockets-dev, P2Rank 2.0 as run by its authors.
 struct Peer {
+  const char* name;
+  const char* dataset;
   double dcc[3], dca[3];  // top-1, top-3, top-(n+2)
   double pockets, seconds;
 };
-constexpr Peer kFpocket{{0.431, 0.569, 0.569}, {0.627, 0.804, 0.804}, 13, 0.63};
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+constexpr Peer kPeers[] = {
+    {"P2Rank 2.0", "pockets-dev", {0.451, 0.471, kUnknown}, {0.725, 0.784, kUnknown}, kUnknown, kUnknown},
+    {"fpocket 4.0", "pockets-dev", {0.431, 0.569, 0.569}, {0.627, 0.804, 0.804}, 13, 0.63},
+    {"P2Rank 2.0", "pockets-train", {0.409, 0.440, kUnknown}, {0.653, 0.733, kUnknown}, kUnknown, kUnknown},
+};
 
 struct Options {
   fs::path dataset = fs::path(ALPHAPOCKET_SOURCE_DIR) / ".." / "shared" / "data" / "pockets-dev";
@@ -234,6 +243,76 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
+// The figures of one ranking over the dataset.
+struct Figures {
+  std::array<std::size_t, 3> dcc{}, dca{};  // hits at top-1, top-3, top-(n+2)
+  std::size_t ligands = 0;
+  std::vector<double> sites, seconds;  // per structure
+  double fraction(std::size_t hits) const { return ligands ? double(hits) / double(ligands) : 0.0; }
+};
+
+// Runs alphapocket into work/<name>/ (unless scoring given reports) with
+// the extra options, and scores each structure's sites.
+Figures score(const Options& o, const std::vector<std::pair<std::string, std::vector<std::string>>>& entries,
+              const fs::path& work, const std::string& extra, bool details, bool warn) {
+  Figures fig;
+  fs::create_directories(work);
+  for (const auto& [file, codes] : entries) {
+    const fs::path structure = o.dataset / file;
+    const std::string name = structure.stem().string();
+    const fs::path outdir = work / name;
+    if (o.reports.empty()) {
+      const std::string command = shell_quote(o.alphapocket) + " -q pockets " + shell_quote(structure.string()) +
+                                  " -o " + shell_quote(outdir.string()) + extra + " > /dev/null";
+      const auto start = std::chrono::steady_clock::now();
+      if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
+      fig.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    const std::vector<alpha::Vec3> centers = site_centers(outdir / "report.json");
+    const std::vector<Ligand> ligands = read_ligands(structure, codes);
+    if (ligands.empty() && warn) std::fprintf(stderr, "warning: %s: none of its listed ligands found\n", file.c_str());
+    fig.sites.push_back(double(centers.size()));
+    fig.ligands += ligands.size();
+
+    std::string detail;
+    for (const Ligand& l : ligands) {
+      const std::size_t by_center = first_hit(centers, l, false), by_atom = first_hit(centers, l, true);
+      const std::array<std::size_t, 3> k{1, 3, ligands.size() + 2};
+      for (int t = 0; t < 3; ++t) {
+        fig.dcc[t] += by_center && by_center <= k[t];
+        fig.dca[t] += by_atom && by_atom <= k[t];
+      }
+      detail += "  " + l.name + " DCC " + (by_center ? std::to_string(by_center) : "-") + " DCA " +
+                (by_atom ? std::to_string(by_atom) : "-");
+    }
+    if (details) {
+      char time[32] = "";
+      if (o.reports.empty()) std::snprintf(time, sizeof time, " %6.2f s", fig.seconds.back());
+      std::fprintf(stderr, "%-10s %3zu sites%s%s\n", name.c_str(), centers.size(), time, detail.c_str());
+    }
+  }
+  return fig;
+}
+
+void print_row(const char* name, const double dcc[3], const double dca[3], double sites, double seconds) {
+  const auto cell = [](double x, const char* format) {
+    char text[16];
+    if (std::isnan(x)) return std::string("-");
+    std::snprintf(text, sizeof text, format, x);
+    return std::string(text);
+  };
+  std::printf("%-26s %6s %6s %6s   %6s %6s %6s   %6s %8s\n", name, cell(dcc[0], "%.3f").c_str(),
+              cell(dcc[1], "%.3f").c_str(), cell(dcc[2], "%.3f").c_str(), cell(dca[0], "%.3f").c_str(),
+              cell(dca[1], "%.3f").c_str(), cell(dca[2], "%.3f").c_str(), cell(sites, "%.1f").c_str(),
+              cell(seconds, "%.2f").c_str());
+}
+
+void print_figures(const char* name, const Figures& f) {
+  const double dcc[3] = {f.fraction(f.dcc[0]), f.fraction(f.dcc[1]), f.fraction(f.dcc[2])};
+  const double dca[3] = {f.fraction(f.dca[0]), f.fraction(f.dca[1]), f.fraction(f.dca[2])};
+  print_row(name, dcc, dca, bench::median(f.sites), f.seconds.empty() ? kUnknown : bench::median(f.seconds));
+}
+
 int run(const Options& o) {
   const auto entries = read_ds(o.dataset);
   fs::path work = o.reports.empty() ? o.keep : o.reports;
@@ -247,69 +326,39 @@ int run(const Options& o) {
   std::string extra;
   for (const std::string& a : o.pass_through) extra += " " + shell_quote(a);
 
-  std::array<std::size_t, 3> dcc{}, dca{};  // hits at top-1, top-3, top-(n+2)
-  std::size_t ligands_total = 0;
-  std::vector<double> sites_per_structure, seconds;
-  for (const auto& [file, codes] : entries) {
-    const fs::path structure = o.dataset / file;
-    const std::string name = structure.stem().string();
-    const fs::path outdir = work / name;
-    if (o.reports.empty()) {
-      const std::string command = shell_quote(o.alphapocket) + " -q pockets " + shell_quote(structure.string()) +
-                                  " -o " + shell_quote(outdir.string()) + extra + " > /dev/null";
-      const auto start = std::chrono::steady_clock::now();
-      if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
-      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    const std::vector<alpha::Vec3> centers = site_centers(outdir / "report.json");
-    const std::vector<Ligand> ligands = read_ligands(structure, codes);
-    if (ligands.empty()) std::fprintf(stderr, "warning: %s: none of its listed ligands found\n", file.c_str());
-    sites_per_structure.push_back(double(centers.size()));
-    ligands_total += ligands.size();
-
-    std::string detail;
-    for (const Ligand& l : ligands) {
-      const std::size_t by_center = first_hit(centers, l, false), by_atom = first_hit(centers, l, true);
-      const std::array<std::size_t, 3> k{1, 3, ligands.size() + 2};
-      for (int t = 0; t < 3; ++t) {
-        dcc[t] += by_center && by_center <= k[t];
-        dca[t] += by_atom && by_atom <= k[t];
-      }
-      detail += "  " + l.name + " DCC " + (by_center ? std::to_string(by_center) : "-") + " DCA " +
-                (by_atom ? std::to_string(by_atom) : "-");
-    }
-    if (o.details) {
-      char time[32] = "";
-      if (o.reports.empty()) std::snprintf(time, sizeof time, " %6.2f s", seconds.back());
-      std::fprintf(stderr, "%-10s %3zu sites%s%s\n", name.c_str(), centers.size(), time, detail.c_str());
-    }
-  }
+  const Figures fig = score(o, entries, work, extra, o.details, true);
+  // Running: the geometric ranking too, into work/geometric/.
+  const bool both = o.reports.empty();
+  const Figures geo = both ? score(o, entries, work / "geometric", extra + " --ranking geometric", false, false) : Figures{};
   if (temporary) fs::remove_all(work);
 
-  const auto fraction = [&](std::size_t hits) { return ligands_total ? double(hits) / double(ligands_total) : 0.0; };
-  const double sites_median = bench::median(sites_per_structure), seconds_median = bench::median(seconds);
+  const double sites_median = bench::median(fig.sites), seconds_median = bench::median(fig.seconds);
   if (o.json) {
     nlohmann::ordered_json j;
     j["structures"] = entries.size();
-    j["ligands"] = ligands_total;
-    j["dcc"] = {fraction(dcc[0]), fraction(dcc[1]), fraction(dcc[2])};
-    j["dca"] = {fraction(dca[0]), fraction(dca[1]), fraction(dca[2])};
+    j["ligands"] = fig.ligands;
+    j["dcc"] = {fig.fraction(fig.dcc[0]), fig.fraction(fig.dcc[1]), fig.fraction(fig.dcc[2])};
+    j["dca"] = {fig.fraction(fig.dca[0]), fig.fraction(fig.dca[1]), fig.fraction(fig.dca[2])};
     j["sites_median"] = sites_median;
-    j["seconds_median"] = seconds.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(seconds_median);
+    j["seconds_median"] = fig.seconds.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(seconds_median);
+    if (both) {
+      j["geometric"] = {{"dcc", {geo.fraction(geo.dcc[0]), geo.fraction(geo.dcc[1]), geo.fraction(geo.dcc[2])}},
+                        {"dca", {geo.fraction(geo.dca[0]), geo.fraction(geo.dca[1]), geo.fraction(geo.dca[2])}},
+                        {"seconds_median", bench::median(geo.seconds)}};
+    }
     std::puts(j.dump().c_str());
     return 0;
   }
-  std::printf("ligand-binding sites: %zu structures, %zu ligands (%s)\n", entries.size(), ligands_total,
+  std::printf("ligand-binding sites: %zu structures, %zu ligands (%s)\n", entries.size(), fig.ligands,
               o.dataset.filename().c_str());
-  std::printf("%-26s %7s %7s %9s   %s\n", "", "top-1", "top-3", "top-(n+2)", "fpocket 4.0");
-  std::printf("%-26s %7.3f %7.3f %9.3f   %.3f %.3f %.3f\n", "DCC <= 4 A", fraction(dcc[0]), fraction(dcc[1]),
-              fraction(dcc[2]), kFpocket.dcc[0], kFpocket.dcc[1], kFpocket.dcc[2]);
-  std::printf("%-26s %7.3f %7.3f %9.3f   %.3f %.3f %.3f\n", "DCA <= 4 A", fraction(dca[0]), fraction(dca[1]),
-              fraction(dca[2]), kFpocket.dca[0], kFpocket.dca[1], kFpocket.dca[2]);
-  std::printf("%-26s %7.1f %27.0f\n", "sites per structure", sites_median, kFpocket.pockets);
-  if (!seconds.empty())
-    std::printf("%-26s %7.2f %27.2f\n", "seconds per structure", seconds_median, kFpocket.seconds);
-  std::printf("(medians over the structures; seconds: wall clock of one `alphapocket pockets` run, all files written)\n");
+  std::printf("%-26s %6s %6s %6s   %6s %6s %6s   %6s %8s\n", "", "DCC@1", "DCC@3", "@(n+2)", "DCA@1", "DCA@3",
+              "@(n+2)", "sites", "seconds");
+  print_figures(both ? "alphapocket (probability)" : "alphapocket", fig);
+  if (both) print_figures("alphapocket (geometric)", geo);
+  for (const Peer& p : kPeers)
+    if (o.dataset.filename() == p.dataset) print_row(p.name, p.dcc, p.dca, p.pockets, p.seconds);
+  std::printf("(DCC/DCA <= 4 A at top-1, top-3, top-(n+2); medians over the structures; seconds: wall clock of one "
+              "`alphapocket pockets` run, all files written; peers: the dataset's README)\n");
   return 0;
 }
 

@@ -41,14 +41,15 @@ int run(const std::string& file, const std::string& outdir) {
               cavities.sa_area, cavities.sa_volume, cavities.pockets.size(), cavities.voids.size(),
               cavities.tunnels.size());
   // The candidate binding sites: every pocket and each void large enough to
-  // hold a drug-sized ligand, in one ranking.
+  // hold a drug-sized ligand, in one ranking by the ligandability model's
+  // calibrated probability that a ligand binds there.
   for (std::size_t i = 0; i < std::min<std::size_t>(3, cavities.sites.size()); ++i) {
     const molecule::Cavity& c = cavities.cavity(cavities.sites[i]);
     const auto residues = molecule::residues_of(structure.atoms, c.lining_atoms);
     std::printf(
-        "site %zu (%s): score %.3g, volume %.0f A^3 (SA) / %.0f A^3 (molecular surface), %zu mouth(s), depth %.1f A, "
+        "site %zu (%s): probability %.2f, score %.3g, volume %.0f A^3 (SA) / %.0f A^3 (molecular surface), %zu mouth(s), depth %.1f A, "
         "%zu lining residues, first %s\n",
-        i + 1, molecule::site_cavity_name(cavities.sites[i]).c_str(), c.score, c.sa_volume, c.ms_volume, c.mouths.size(),
+        i + 1, molecule::site_cavity_name(cavities.sites[i]).c_str(), c.probability, c.score, c.sa_volume, c.ms_volume, c.mouths.size(),
         c.depth, residues.size(), molecule::residue_id(structure.atoms[residues[0]]).c_str());
   }
 

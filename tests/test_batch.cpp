@@ -196,7 +196,8 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   CHECK(a.report["tunnels"].size() == a.search.cavities.tunnels.size() + a.paths.size());
   CHECK(back.rows["structure"][2] == a.structure.atoms.size());
   const auto& first = back.rows["sites"][0];
-  CHECK(first[3] == a.report["pockets"][0]["score"]);  // site 1 is pocket 1 here
+  CHECK(first[3] == a.report["sites"][0]["score"]);
+  CHECK(first[4] == a.report["sites"][0]["probability"]);
   CHECK_THROWS_AS(molecule::parse_record(line.substr(0, line.size() / 2)), alpha::Error);  // a cut line
   CHECK_THROWS_AS(molecule::parse_record("{}"), alpha::Error);
 }

@@ -262,28 +262,30 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
   const std::vector<std::string> lines = lines_of(testing::read_text(r.file("pockets.csv")));
   REQUIRE(lines.size() == 1 + r.search.cavities.pockets.size());
   CHECK(lines[0] ==
-        "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
-        "lining_residues,residues,mean_plddt");
+        "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,"
+        "center_z,lining_residues,residues,mean_plddt");
   for (std::size_t i = 1; i < lines.size(); ++i) {
     INFO(lines[i]);
     const std::vector<std::string> f = split(lines[i], ',');
-    REQUIRE(f.size() == 15);
-    CHECK(f[14].empty());  // an experimental structure: no pLDDT
+    REQUIRE(f.size() == 16);
+    CHECK(f[15].empty());  // an experimental structure: no pLDDT
     const json& p = r.report["pockets"][i - 1];
     CHECK(std::stoul(f[0]) == i);
     CHECK(std::stod(f[1]) == p["score"].get<double>());
-    CHECK(std::stod(f[2]) == p["sa_volume"].get<double>());  // the same text
-    CHECK(std::stod(f[3]) == p["ms_volume"].get<double>());
-    CHECK(std::stod(f[5]) == p["ms_area"].get<double>());
-    CHECK(std::stoul(f[6]) == p["mouths"].get<std::size_t>());
-    CHECK(std::stod(f[9]) == p["center"][0].get<double>());
-    CHECK(std::stoul(f[12]) == p["lining_residues"].size());
+    CHECK(std::stod(f[2]) == p["probability"].get<double>());
+    CHECK(std::stod(f[2]) == Approx(r.search.cavities.pockets[i - 1].probability).margin(5e-5));
+    CHECK(std::stod(f[3]) == p["sa_volume"].get<double>());  // the same text
+    CHECK(std::stod(f[4]) == p["ms_volume"].get<double>());
+    CHECK(std::stod(f[6]) == p["ms_area"].get<double>());
+    CHECK(std::stoul(f[7]) == p["mouths"].get<std::size_t>());
+    CHECK(std::stod(f[10]) == p["center"][0].get<double>());
+    CHECK(std::stoul(f[13]) == p["lining_residues"].size());
     std::string ids;
     for (const json& res : p["lining_residues"]) {
       if (!ids.empty()) ids += ' ';
       ids += res["id"].get<std::string>();
     }
-    CHECK(f[13] == ids);
+    CHECK(f[14] == ids);
   }
 }
 
@@ -419,8 +421,10 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   }
   CHECK(pml.find("show spheres, tunnel_*_bottleneck\n") != std::string::npos);
   CHECK(centers.size() == r.report["pockets"].size() + r.report["voids"].size() + tunnels.size());
-  // The best site is in the middle of the view.
-  CHECK(pml.find("\norient pocket_1_space or byres pocket_1\n") != std::string::npos);
+  // The best site (report.json's first; the model ranks them) is in the middle of the view.
+  const json& best = r.report["sites"].at(0);
+  const std::string top = best["kind"].get<std::string>() + "_" + std::to_string(best["cavity_rank"].get<int>());
+  CHECK(pml.find("\norient " + top + "_space or byres " + top + "\n") != std::string::npos);
 }
 
 TEST_CASE("pockets outputs: structure.cif reads back as the atoms searched, then the ligands", "[pocket_outputs]") {

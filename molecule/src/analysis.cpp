@@ -58,7 +58,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
                                                           std::to_string(options.max_atoms),
                           /*skipped=*/true);
     try {
-      a.search = search_pockets(a.structure, options.cavities);
+      a.search = search_pockets(a.structure, options.cavities, options.ranking);
     } catch (const alpha::Error& e) {
       throw AnalysisError(FailureKind::BadInput, file + ": " + e.what());  // e.g. all atoms in one plane
     }

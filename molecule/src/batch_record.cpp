@@ -37,7 +37,7 @@ json report_rows(const json& report) {
     const std::string kind = s.at("kind");
     const json& c = report.at(kind == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
     const json& center = c.at("center");
-    sites.push_back({s.at("rank"), kind, s.at("cavity_rank"), c.at("score"), c.at("sa_volume"), c.at("ms_volume"),
+    sites.push_back({s.at("rank"), kind, s.at("cavity_rank"), c.at("score"), c.at("probability"), c.at("sa_volume"), c.at("ms_volume"),
                      c.at("sa_area"), c.at("ms_area"), c.at("depth"), c.at("mouths"), c.at("mouth_area"),
                      c.at("buriedness"), c.at("burial_atoms"), c.at("max_probe_radius"), center[0], center[1],
                      center[2], value_or_null(s, "mean_plddt"), c.at("lining_residues").size(),

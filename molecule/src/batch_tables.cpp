@@ -39,7 +39,7 @@ const Table kStructures{"structures",
                         3};
 const Table kSites{"sites",
                    {{"structure_id", T}, {"site_rank", I}, {"kind", T}, {"cavity_rank", I}, {"score", R},
-                    {"sa_volume", R}, {"ms_volume", R}, {"sa_area", R}, {"ms_area", R}, {"depth", R},
+                    {"probability", R}, {"sa_volume", R}, {"ms_volume", R}, {"sa_area", R}, {"ms_area", R}, {"depth", R},
                     {"mouths", I}, {"mouth_area", R}, {"buriedness", R}, {"burial_atoms", I},
                     {"max_probe_radius", R}, {"center_x", R}, {"center_y", R}, {"center_z", R}, {"mean_plddt", R},
                     {"lining_residues", I}, {"residues", T}},

@@ -32,6 +32,9 @@ std::vector<alpha::Index> all_atoms(std::size_t n) {
   return out;
 }
 
+// Probabilities to 4 decimals; null where none was computed (find_cavities alone).
+json probability(double p) { return std::isnan(p) ? json() : json(rounded(p, 1e4)); }
+
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
 // Residue identity: chain, number, insertion code and name.
@@ -70,6 +73,7 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
   json e = {
       {"rank", rank},
       {"score", score(c.score)},
+      {"probability", probability(c.probability)},
       {"sa_volume", length(c.sa_volume)},
       {"sa_area", length(c.sa_area)},
       {"ms_volume", length(c.ms_volume)},
@@ -113,6 +117,7 @@ json site_list(const PocketRun& run) {
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},
                    {"score", score(c.score)},
+                   {"probability", probability(c.probability)},
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(c.center)},
                    {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)}});
@@ -279,7 +284,7 @@ json pocket_report(const PocketRun& run) {
 
 std::string pockets_csv(const PocketRun& run) {
   std::string out =
-      "rank,score,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
+      "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
       "lining_residues,residues,mean_plddt\n";
   const std::vector<Atom>& atoms = run.structure->atoms;
   std::size_t rank = 0;
@@ -290,8 +295,9 @@ std::string pockets_csv(const PocketRun& run) {
       if (!names.empty()) names += ' ';
       names += residue_id(atoms[i]);
     }
-    out += std::to_string(++rank);
-    for (const double x : {score(c.score), length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
+    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' +
+           (std::isnan(c.probability) ? std::string() : csv_number(rounded(c.probability, 1e4)));
+    for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
                            length(c.ms_area)})
       out += ',' + csv_number(x);
     out += ',' + std::to_string(c.mouths.size());

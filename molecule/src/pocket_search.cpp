@@ -1,10 +1,13 @@
 #include "molecule/pocket_search.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 #include <vector>
 
 #include "molecule/atom_balls.hpp"
+#include "molecule/ligandability_model.hpp"
+#include "molecule/site_features.hpp"
 
 namespace molecule {
 namespace {
@@ -15,7 +18,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-PocketSearch search_pockets(const Structure& structure, const CavityOptions& options) {
+PocketSearch search_pockets(const Structure& structure, const CavityOptions& options, SiteRanking ranking) {
   PocketSearch out;
   const auto start = std::chrono::steady_clock::now();
   AtomBalls balls = atom_balls(structure.atoms, options.probe);
@@ -29,6 +32,20 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
   const auto cavities_start = std::chrono::steady_clock::now();
   out.cavities = find_cavities(*out.complex, radii, options);
   out.cavities_seconds = seconds_since(cavities_start);
+  const auto ranking_start = std::chrono::steady_clock::now();
+  Cavities& cav = out.cavities;
+  const LigandabilityModel& model = default_ligandability_model();
+  const SiteFeatures features(structure, cav);
+  for (std::vector<Cavity>* list : {&cav.pockets, &cav.voids})
+    for (Cavity& c : *list) {
+      c.ligandability = model.margin(features(c));
+      c.probability = model.probability(c.ligandability);
+    }
+  if (ranking == SiteRanking::probability)
+    std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
+      return cav.cavity(a).ligandability > cav.cavity(b).ligandability;
+    });
+  out.ranking_seconds = seconds_since(ranking_start);
   return out;
 }
 

@@ -303,10 +303,10 @@ case "$case_name" in
       [[ $(csv_get "$s" $id predicted) == 1 ]] || fail "$id not predicted"
       p=$(csv_get "$s" $id mean_plddt)
       [[ $p =~ ^[0-9]+\.[0-9]+$ ]] || fail "$id: mean_plddt '$p'"
-      [[ -z $(awk -F, -v id=$id '$1 == id && $19 == ""' "$tmp/o/sites.csv") ]] || fail "$id: a site without pLDDT"
+      [[ -z $(awk -F, -v id=$id '$1 == id && $20 == ""' "$tmp/o/sites.csv") ]] || fail "$id: a site without pLDDT"
     done
     [[ $(csv_get "$s" 1ytjA predicted) == 0 && -z $(csv_get "$s" 1ytjA mean_plddt) ]] || fail "1ytjA predicted"
-    [[ -z $(awk -F, '$1 == "1ytjA" && $19 != ""' "$tmp/o/sites.csv") ]] || fail "1ytjA: a site with pLDDT"
+    [[ -z $(awk -F, '$1 == "1ytjA" && $20 != ""' "$tmp/o/sites.csv") ]] || fail "1ytjA: a site with pLDDT"
     # The AF-X6R8D5 model's pLDDT spans 35-87: at 70 some residues go.
     run -q batch "$tmp/in" -o "$tmp/cut" --min-plddt 70
     expect_success

@@ -50,7 +50,7 @@ case "$case_name" in
     read -r pockets voids tunnels <<<"$(summary_counts)"
     [[ $pockets -ge 1 ]] || fail "no pockets in the summary"
     grep -q "^site  cavity .*lining residues$" "$tmp/out" || fail "no table in the summary"
-    grep -qE '^ +1  pocket 1 .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for site 1"
+    grep -qE '^ +1  pocket [0-9]+ +[01]\.[0-9]{3} .* A:[A-Z]{3}:[0-9]+' "$tmp/out" || fail "no residues for site 1"
     [[ $tunnels -ge 1 ]] || fail "1a26A has tunnels"
     grep -qE '^widest tunnel: bottleneck radius [0-9]+\.[0-9]{2} A between A:[A-Z]{3}:[0-9]+' "$tmp/out" ||
       fail "no line for the widest tunnel"

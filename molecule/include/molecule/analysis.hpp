@@ -54,6 +54,7 @@ struct AnalysisOptions {
   std::string radii_file;           // --radii (molecule/radius_file.hpp); empty: ProtOr
   std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
   TunnelOptions tunnels;            // --tunnel-probe, --pores
+  SiteRanking ranking = SiteRanking::probability;
 };
 
 // Everything one structure produced; owns all of it.

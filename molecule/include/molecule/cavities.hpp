@@ -113,7 +113,12 @@ struct Cavity {
   // Atoms (input points) within CavityOptions::burial_radius of the centre:
   // how deep in the molecule the cavity lies (P2Rank's "protrusion").
   std::size_t burial_atoms = 0;
-  double score = 0;  // ranking score, larger is better (see cavity_score)
+  double score = 0;  // geometric ranking score, larger is better (see cavity_score)
+  // The ligandability model's margin and its calibrated probability that a
+  // ligand binds here (molecule/ligandability_model.hpp), set by
+  // search_pockets (find_cavities leaves them NaN).
+  double ligandability = std::numeric_limits<double>::quiet_NaN();
+  double probability = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Tunnel {
@@ -162,7 +167,7 @@ struct Cavities {
   // an enclosed cavity must hold the whole ligand, and smaller voids are
   // packing defects and water sites. Holo structures often close a lid over
   // their ligand, so a site can be a void once the ligand is removed.
-  std::vector<Site> sites;
+  std::vector<Site> sites;  // (search_pockets may rank them by probability instead)
 
   const Cavity& cavity(const Site& site) const { return (site.is_void ? voids : pockets).at(site.index); }
 };

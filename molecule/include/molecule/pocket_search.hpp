@@ -12,17 +12,26 @@
 
 namespace molecule {
 
+// How Cavities::sites are ordered: by the ligandability model's
+// probability (its margin; ties in the geometric order), or by the
+// geometric score as find_cavities ranks them.
+enum class SiteRanking { probability, geometric };
+
 struct PocketSearch {
   std::unique_ptr<alpha::Triangulation> triangulation;
   std::unique_ptr<alpha::AlphaComplex> complex;  // refers to *triangulation
   Cavities cavities;  // atom indices are indices into Structure::atoms
-  // Wall-clock seconds of the two stages, for logs and benchmarks.
+  // Wall-clock seconds of the stages, for logs and benchmarks.
   double complex_seconds = 0;
   double cavities_seconds = 0;
+  double ranking_seconds = 0;  // site features and ligandability model
 };
 
-// Throws alpha::Error for unusable input (e.g. all atoms in one plane) or
-// options (negative probe).
-PocketSearch search_pockets(const Structure& structure, const CavityOptions& options);
+// Every pocket and void gets its ligandability and probability from the
+// default model (molecule/ligandability_model.hpp); the sites are then
+// ordered as `ranking` says. Throws alpha::Error for unusable input (e.g.
+// all atoms in one plane) or options (negative probe).
+PocketSearch search_pockets(const Structure& structure, const CavityOptions& options,
+                            SiteRanking ranking = SiteRanking::probability);
 
 }  // namespace molecule

@@ -1,0 +1,44 @@
+// The ligandability model: how likely a ligand binds in a cavity, from its
+// features (molecule/site_features.hpp). An ensemble of decision trees
+// (gradient-boosted or a random forest, fitted by training/ on
+// pockets-train) gives a margin, init + scale * sum of the trees' leaf
+// values, which ranks the sites; an isotonic map fitted on out-of-fold
+// margins turns it into a calibrated probability. The model is a JSON file
+// (training/ writes it; format in training/README.md); the default one,
+// molecule/data/ligandability.json, is compiled into the binary.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace molecule {
+
+class LigandabilityModel {
+public:
+  // Parses the JSON text; throws alpha::Error when it is not a model or its
+  // features are not site_feature_names().
+  explicit LigandabilityModel(std::string_view json);
+
+  // The margin of a feature vector (site_feature_names() order). As
+  // scikit-learn's trees, a feature is compared with a node's threshold as
+  // a float (x_float <= threshold: left).
+  double margin(const std::vector<double>& features) const;
+  // The calibrated probability of a margin: the isotonic map, linear
+  // between its knots, constant beyond them (scikit-learn's
+  // IsotonicRegression with out_of_bounds="clip").
+  double probability(double margin) const;
+
+private:
+  struct Tree {
+    std::vector<int> feature, left, right;  // left/right -1: a leaf
+    std::vector<double> threshold, value;
+  };
+  std::vector<Tree> trees_;
+  double init_ = 0, scale_ = 1;
+  std::vector<double> knots_x_, knots_y_;
+};
+
+// The model compiled into alphapocket (molecule/data/ligandability.json).
+const LigandabilityModel& default_ligandability_model();
+
+}  // namespace molecule

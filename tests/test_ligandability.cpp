@@ -1,0 +1,184 @@
+// The ligandability model (molecule/ligandability_model.hpp) and its
+// features (molecule/site_features.hpp): the compiled-in model gives the
+// margins and probabilities scikit-learn gave on every pockets-dev site
+// (fixture written by training/train.py), the evaluator follows a
+// hand-made model exactly, bad models are refused, and search_pockets
+// ranks the sites by the model.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "alpha/error.hpp"
+#include "molecule/ligandability_model.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/site_features.hpp"
+#include "molecule/structure.hpp"
+
+namespace {
+
+using molecule::LigandabilityModel;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) out.push_back(field);
+  return out;
+}
+
+struct FixtureRow {
+  std::string structure, kind;
+  std::size_t cavity_rank = 0;
+  std::vector<double> features;
+  double margin = 0, probability = 0;
+};
+
+std::vector<FixtureRow> read_fixture(std::vector<std::string>& header) {
+  std::ifstream in(std::string(ALPHAPOCKET_TEST_DATA) + "/ligandability/pockets-dev.csv");
+  REQUIRE(in);
+  std::string line;
+  std::getline(in, line);
+  header = split(line);
+  std::vector<FixtureRow> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = split(line);
+    REQUIRE(f.size() == header.size());
+    FixtureRow r{f[0], f[1], std::stoul(f[2]), {}, std::stod(f[f.size() - 2]), std::stod(f.back())};
+    for (std::size_t k = 3; k + 2 < f.size(); ++k) r.features.push_back(std::stod(f[k]));
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+// One tree: x0 <= 1.5 ? (x1 <= -2 ? 0.25 : -1) : 3; init 0.5, scale 2; the
+// calibration 0 -> 0.1, 4 -> 0.9 (linear between, clipped beyond).
+std::string toy_model(const std::string& tree, const std::string& knots = R"("x":[0,4],"y":[0.1,0.9])") {
+  std::string features;
+  for (const std::string& n : molecule::site_feature_names()) features += (features.empty() ? "\"" : ",\"") + n + '"';
+  return R"({"features":[)" + features + R"(],"init":0.5,"scale":2,"trees":[)" + tree +
+         R"(],"calibration":{)" + knots + "}}";
+}
+const std::string kToyTree =
+    R"({"feature":[0,1,-1,-1,-1],"threshold":[1.5,-2,0,0,0],"left":[1,3,-1,-1,-1],"right":[2,4,-1,-1,-1],)"
+    R"("value":[0,0,3,0.25,-1]})";
+
+}  // namespace
+
+TEST_CASE("ligandability: the compiled-in model gives scikit-learn's margin and probability on every pockets-dev site",
+          "[ligandability]") {
+  std::vector<std::string> header;
+  const std::vector<FixtureRow> rows = read_fixture(header);
+  const std::vector<std::string> names(header.begin() + 3, header.end() - 2);
+  CHECK(names == molecule::site_feature_names());
+  std::map<std::string, int> structures;
+  for (const FixtureRow& r : rows) ++structures[r.structure];
+  CHECK(structures.size() == 40);  // every pockets-dev structure has sites
+  const LigandabilityModel& model = molecule::default_ligandability_model();
+  double worst_margin = 0, worst_probability = 0;
+  for (const FixtureRow& r : rows) {
+    const double m = model.margin(r.features);
+    worst_margin = std::max(worst_margin, std::fabs(m - r.margin));
+    worst_probability = std::max(worst_probability, std::fabs(model.probability(m) - r.probability));
+  }
+  INFO(rows.size() << " sites");
+  CHECK(worst_margin <= 1e-6);
+  CHECK(worst_probability <= 1e-6);
+}
+
+TEST_CASE("ligandability: alphapocket's features of a pockets-dev structure are the fixture's", "[ligandability]") {
+  std::vector<std::string> header;
+  const std::vector<FixtureRow> rows = read_fixture(header);
+  for (const char* name : {"1fkgA", "3stdA"}) {
+    INFO(name);
+    const molecule::Structure s = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/" + name + ".pdb");
+    const molecule::PocketSearch search = molecule::search_pockets(s, {});
+    const molecule::SiteFeatures features(s, search.cavities);
+    std::size_t seen = 0;
+    for (const FixtureRow& r : rows) {
+      if (r.structure != name) continue;
+      ++seen;
+      const auto& list = r.kind == "void" ? search.cavities.voids : search.cavities.pockets;
+      REQUIRE(r.cavity_rank >= 1);
+      REQUIRE(r.cavity_rank <= list.size());
+      const molecule::Cavity& c = list[r.cavity_rank - 1];
+      const std::vector<double> f = features(c);
+      REQUIRE(f.size() == r.features.size());
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        INFO(molecule::site_feature_names()[k]);
+        CHECK(f[k] == Approx(r.features[k]).epsilon(1e-12).margin(1e-12));
+      }
+      CHECK(std::fabs(c.ligandability - r.margin) <= 1e-6);
+      CHECK(std::fabs(c.probability - r.probability) <= 1e-6);
+    }
+    CHECK(seen == search.cavities.sites.size());
+  }
+}
+
+TEST_CASE("ligandability: the evaluator follows a hand-made model", "[ligandability]") {
+  const LigandabilityModel model(toy_model(kToyTree));
+  std::vector<double> x(molecule::site_feature_names().size(), 0.0);
+  x[0] = 1.5, x[1] = -2;  // both thresholds met exactly: left, left
+  CHECK(model.margin(x) == 0.5 + 2 * 0.25);
+  x[1] = -1.9;
+  CHECK(model.margin(x) == 0.5 + 2 * -1);
+  x[0] = 1.50000001;  // rounds to the float 1.5: still left (scikit-learn compares float32 features)
+  CHECK(model.margin(x) == 0.5 + 2 * -1);
+  x[0] = 1.6;
+  CHECK(model.margin(x) == 0.5 + 2 * 3);
+  CHECK(model.probability(-5) == 0.1);
+  CHECK(model.probability(0) == 0.1);
+  CHECK(model.probability(1) == Approx(0.3).epsilon(1e-15));
+  CHECK(model.probability(4) == 0.9);
+  CHECK(model.probability(40) == 0.9);
+  CHECK_THROWS_AS(model.margin(std::vector<double>(3, 0.0)), alpha::Error);
+}
+
+TEST_CASE("ligandability: malformed models are refused", "[ligandability]") {
+  CHECK_THROWS_AS(LigandabilityModel("{"), alpha::Error);
+  CHECK_THROWS_AS(LigandabilityModel(R"({"features":["x"],"init":0,"scale":1,"trees":[],"calibration":{"x":[0],"y":[0]}})"),
+                  alpha::Error);  // other features
+  // A child before its parent (a walk could loop), a feature out of range,
+  // arrays of different lengths, unsorted knots.
+  std::string loop = kToyTree;
+  loop.replace(loop.find(R"("left":[1)"), 9, R"("left":[0)");
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(loop)), alpha::Error);
+  std::string far = kToyTree;
+  far.replace(far.find(R"("feature":[0)"), 12, R"("feature":[999)");
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(far)), alpha::Error);
+  std::string short_value = kToyTree;
+  short_value.replace(short_value.find(",-1]}"), 5, "]}");
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(short_value)), alpha::Error);
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(kToyTree, R"("x":[4,0],"y":[0.1,0.9])")), alpha::Error);
+  CHECK_NOTHROW(LigandabilityModel(toy_model(kToyTree)));
+}
+
+TEST_CASE("ligandability: search_pockets ranks the sites by probability, or geometrically", "[ligandability]") {
+  const molecule::Structure s = molecule::read_structure(std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb");
+  const molecule::PocketSearch by_model = molecule::search_pockets(s, {});
+  const molecule::PocketSearch geometric = molecule::search_pockets(s, {}, molecule::SiteRanking::geometric);
+  const molecule::Cavities& a = by_model.cavities;
+  const molecule::Cavities& b = geometric.cavities;
+  REQUIRE(a.sites.size() >= 3);
+  REQUIRE(a.sites.size() == b.sites.size());
+  for (const auto* list : {&a.pockets, &a.voids})
+    for (const molecule::Cavity& c : *list) {
+      CHECK(c.probability >= 0);
+      CHECK(c.probability <= 1);
+      CHECK(c.probability == molecule::default_ligandability_model().probability(c.ligandability));
+    }
+  bool reordered = false;
+  for (std::size_t k = 0; k < a.sites.size(); ++k) {
+    if (k > 0) {
+      CHECK(a.cavity(a.sites[k - 1]).ligandability >= a.cavity(a.sites[k]).ligandability);
+      CHECK(a.cavity(a.sites[k - 1]).probability >= a.cavity(a.sites[k]).probability);
+      CHECK(b.cavity(b.sites[k - 1]).score >= b.cavity(b.sites[k]).score);
+    }
+    reordered |= a.sites[k].is_void != b.sites[k].is_void || a.sites[k].index != b.sites[k].index;
+  }
+  CHECK(reordered);  // the two rankings differ on this structure
+}

@@ -1,0 +1,300 @@
+#!/usr/bin/python3
+"""Rebuilds alphapocket's ligandability model from ../shared/data (see training/README.md).
+
+    /usr/bin/python3 training/train.py [--alphapocket EXE] [--data DIR] [--work DIR] [--model KIND]
+
+Runs `alphapocket pockets --features` on every structure of pockets-train and pockets-dev, labels each
+cavity by bench/ligand_sites' rules (a hit when its centre is within 4 A of a ligand atom), fits the
+trees on pockets-train only (fixed seeds), calibrates their margin by isotonic regression on
+out-of-fold margins of a grouped (by structure) 5-fold cross-validation, and writes
+molecule/data/ligandability.json and the test fixture tests/data/ligandability/pockets-dev.csv (every
+pockets-dev site's features with scikit-learn's margin and probability). Prints the cross-validated
+figures on pockets-train, the figures on pockets-dev for both rankings and reliability tables.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+from sklearn.ensemble import GradientBoostingClassifier, RandomForestClassifier
+from sklearn.isotonic import IsotonicRegression
+from sklearn.model_selection import GroupKFold
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+HIT = 4.0    # A, DCC and DCA
+MERGE = 1.7  # A, residues of one ligand
+LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
+TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
+
+
+def read_ds(dataset):
+    ds = [f for f in os.listdir(dataset) if f.endswith(".ds")]
+    entries = []
+    for line in open(os.path.join(dataset, ds[0])):
+        words = line.split()
+        if len(words) < 2 or words[0].startswith("#") or words[0] == "HEADER:":
+            continue
+        entries.append((words[0], words[1].split(",")))
+    return entries
+
+
+def read_ligands(path, codes):
+    """The dataset's ligands: listed HETATM residues, heavy atoms, merged when closer than 1.7 A."""
+    residues, altloc_of = {}, {}
+    for line in open(path):
+        if not line.startswith("HETATM") or line[17:20].strip() not in codes:
+            continue
+        element = line[76:78].strip() or line[12:14].strip().lstrip("0123456789")
+        if element.upper() in ("H", "D"):
+            continue
+        key = (line[21], line[22:26], line[26], line[17:20])
+        alt = line[16]
+        if alt != " ":  # one conformer per residue: the first altloc seen
+            if altloc_of.setdefault(key, alt) != alt:
+                continue
+        residues.setdefault(key, []).append([float(line[30:38]), float(line[38:46]), float(line[46:54])])
+    parts = [np.array(v) for v in residues.values()]
+    group = list(range(len(parts)))
+
+    def find(i):
+        while group[i] != i:
+            i = group[i]
+        return i
+    for i in range(len(parts)):
+        for j in range(i + 1, len(parts)):
+            d = np.linalg.norm(parts[i][:, None, :] - parts[j][None, :, :], axis=2)
+            if d.min() < MERGE:
+                a, b = find(i), find(j)
+                group[max(a, b)] = min(a, b)
+    ligands = {}
+    for i, p in enumerate(parts):
+        ligands.setdefault(find(i), []).append(p)
+    return [np.vstack(v) for v in ligands.values()]
+
+
+def run_alphapocket(exe, dataset, work, extra):
+    """Features of every cavity of every structure: list of (name, header, rows, ligands). The sites are
+    ranked geometrically: site_rank is the geometric order (the baseline, and the order of ties)."""
+    entries = read_ds(dataset)
+    os.makedirs(work, exist_ok=True)
+
+    def one(entry):
+        file, codes = entry
+        name = os.path.splitext(file)[0]
+        out = os.path.join(work, name)
+        features = out + ".csv"
+        if not os.path.exists(features):
+            subprocess.run([exe, "-q", "pockets", os.path.join(dataset, file), "-o", out, "--features", features,
+                            "--tunnels-from", "none", "--ranking", "geometric"] + extra, check=True, stdout=subprocess.DEVNULL)
+        with open(features) as f:
+            rows = list(csv.reader(f))
+        return name, rows[0], rows[1:], read_ligands(os.path.join(dataset, file), codes)
+    with ThreadPoolExecutor(2) as pool:
+        return list(pool.map(one, entries))
+
+
+def table(structures):
+    """Feature matrix, labels and bookkeeping of all cavities of all structures; cpp: alphapocket's
+    margin and probability of each."""
+    header = structures[0][1]
+    assert header[:len(LEADING)] == LEADING and header[-len(TRAILING):] == TRAILING, header
+    names = header[len(LEADING):-len(TRAILING)]
+    X, dca, dcc, group, site_rank, centers, ids, cpp = [], [], [], [], [], [], [], []
+    for g, (name, h, rows, ligands) in enumerate(structures):
+        assert h == header, name
+        for r in rows:
+            c = np.array([float(x) for x in r[3:6]])
+            X.append([float(x) for x in r[len(LEADING):-len(TRAILING)]])
+            cpp.append([float(x) for x in r[-len(TRAILING):]])
+            dca.append(any(np.linalg.norm(l - c, axis=1).min() <= HIT for l in ligands))
+            dcc.append(any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for l in ligands))
+            group.append(g)
+            site_rank.append(int(r[2]))
+            centers.append(c)
+            ids.append([name, r[0], r[1]])
+    return (names, np.array(X), np.array(dca, int), np.array(dcc, int), np.array(group), np.array(site_rank),
+            np.array(centers), ids, np.array(cpp))
+
+
+def figures(structures, group, site_rank, centers, key):
+    """DCC and DCA at top-1 and top-3 of the sites ranked by `key` (larger first; ties: given order)."""
+    hits = {"dcc": [0, 0], "dca": [0, 0]}
+    total = 0
+    for g, (name, _, _, ligands) in enumerate(structures):
+        idx = np.where((group == g) & (site_rank > 0))[0]
+        idx = idx[np.argsort(site_rank[idx], kind="stable")]         # given order first
+        idx = idx[np.argsort(-key[idx], kind="stable")]
+        total += len(ligands)
+        for l in ligands:
+            for crit in ("dcc", "dca"):
+                for t, k in enumerate((1, 3)):
+                    top = centers[idx[:k]]
+                    if crit == "dcc":
+                        ok = any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for c in top)
+                    else:
+                        ok = any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in top)
+                    hits[crit][t] += ok
+    return {c: [h / total for h in v] for c, v in hits.items()}, total
+
+
+def make_model(kind, seed=0):
+    if kind == "gb":
+        return GradientBoostingClassifier(n_estimators=200, learning_rate=0.05, max_depth=3, subsample=0.8,
+                                          min_samples_leaf=5, random_state=seed)
+    if kind == "rf":
+        return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=seed,
+                                      n_jobs=2)
+    raise SystemExit("unknown model kind " + kind)
+
+
+def margin(model, X):
+    if isinstance(model, GradientBoostingClassifier):
+        return model.decision_function(X)
+    return model.predict_proba(X)[:, 1]
+
+
+def export(model, names, iso):
+    if isinstance(model, GradientBoostingClassifier):
+        init = float(model._raw_predict_init(np.zeros((1, len(names)), dtype=np.float32))[0, 0])
+        scale = float(model.learning_rate)
+        estimators = [e[0] for e in model.estimators_]
+        values = [e.tree_.value[:, 0, 0] for e in estimators]
+    else:
+        init, scale = 0.0, 1.0 / len(model.estimators_)
+        estimators = model.estimators_
+        values = [e.tree_.value[:, 0, 1] / e.tree_.value[:, 0, :].sum(axis=1) for e in estimators]
+    trees = []
+    for e, v in zip(estimators, values):
+        t = e.tree_
+        trees.append({"feature": [int(f) if l >= 0 else -1 for f, l in zip(t.feature, t.children_left)],
+                      "threshold": [float(x) if l >= 0 else 0.0 for x, l in zip(t.threshold, t.children_left)],
+                      "left": [int(x) for x in t.children_left], "right": [int(x) for x in t.children_right],
+                      "value": [float(x) for x in v]})
+    return {"format": "alphapocket ligandability model 1", "kind": type(model).__name__,
+            "trained_on": "pockets-train", "features": names, "init": init, "scale": scale, "trees": trees,
+            "calibration": {"x": [float(x) for x in iso.X_thresholds_],
+                            "y": [float(y) for y in iso.y_thresholds_]}}
+
+
+def reliability(p, y, bins=(0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0001)):
+    lines = ["| predicted | n | mean predicted | observed rate |", "|---|---|---|---|"]
+    for lo, hi in zip(bins[:-1], bins[1:]):
+        m = (p >= lo) & (p < hi)
+        if m.sum():
+            lines.append(f"| {lo:.2f}-{min(hi, 1):.2f} | {m.sum()} | {p[m].mean():.3f} | {y[m].mean():.3f} |")
+    return "\n".join(lines)
+
+
+def check(rebuilt, margins, probabilities, cpp):
+    """0 when the rebuilt model is the committed one and alphapocket (C++, cpp: margin and probability per
+    site) agrees with scikit-learn on every site; else prints what differs and returns 1."""
+    problems = []
+    with open(os.path.join(ROOT, "molecule", "data", "ligandability.json")) as f:
+        committed = json.load(f)
+    rebuilt = json.loads(json.dumps(rebuilt))
+    for key in ("features", "kind", "init", "scale", "calibration"):
+        if committed.get(key) != rebuilt.get(key):
+            problems.append(f"the rebuilt model's {key} differs from molecule/data/ligandability.json")
+    if committed["trees"] != rebuilt["trees"]:
+        problems.append("the rebuilt model's trees differ from molecule/data/ligandability.json")
+    worst = np.abs(cpp - np.column_stack([margins, probabilities])).max(axis=0)
+    print(f"{len(margins)} pockets-dev sites: alphapocket vs scikit-learn, largest difference "
+          f"{worst[0]:.3g} (margin), {worst[1]:.3g} (probability)")
+    if not worst.max() <= 1e-6:
+        problems.append("alphapocket's margins or probabilities differ from scikit-learn's by more than 1e-6")
+    for p in problems:
+        print("FAIL: " + p, file=sys.stderr)
+    return 1 if problems else 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--alphapocket", default=os.path.join(ROOT, "build", "apps", "alphapocket"))
+    ap.add_argument("--data", default=os.path.join(ROOT, "..", "shared", "data"))
+    ap.add_argument("--work", default=os.path.join(ROOT, "build", "training"),
+                    help="features are cached here (delete it after changing alphapocket)")
+    ap.add_argument("--model", default="gb", choices=["gb", "rf"])
+    ap.add_argument("--label", default="dca", choices=["dca", "dcc", "both"])
+    ap.add_argument("--all-cavities", action="store_true", help="fit on every cavity, not the sites only")
+    ap.add_argument("--drop", default="", help="comma-separated features to leave out (for experiments)")
+    ap.add_argument("--no-write", action="store_true", help="write neither the model nor the fixture")
+    ap.add_argument("--check", action="store_true",
+                    help="write nothing; fail unless the rebuilt model is the committed one and alphapocket's margin "
+                         "and probability of every pockets-dev site are scikit-learn's to 1e-6 (a CTest test)")
+    a = ap.parse_args()
+    if a.check and a.work == ap.get_default("work"):
+        a.work = tempfile.mkdtemp(prefix="alphapocket_training_")  # no stale cached features
+
+    train = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-train"), os.path.join(a.work, "train"), [])
+    dev = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-dev"), os.path.join(a.work, "dev"), [])
+    names, X, dca, dcc, group, site_rank, centers, _, _ = table(train)
+    dnames, dX, ddca, ddcc, dgroup, dsite_rank, dcenters, dids, dcpp = table(dev)
+    y = {"dca": dca, "dcc": dcc, "both": dca & dcc}[a.label]
+    dropped = [n for n in a.drop.split(",") if n]
+    keep = [i for i, n in enumerate(names) if n not in dropped]
+    # Left-out features are kept as columns the trees never split on (the C++ side computes all).
+    Xfit = X.copy()
+    Xfit[:, [i for i in range(len(names)) if i not in keep]] = 0
+    fit_rows = np.ones(len(y), bool) if a.all_cavities else site_rank > 0
+
+    # Grouped cross-validation on pockets-train: out-of-fold margins.
+    folds = list(GroupKFold(5).split(Xfit, y, group))
+    oof = np.zeros(len(y))
+    for tr, te in folds:
+        tr = tr[fit_rows[tr]]
+        oof[te] = margin(make_model(a.model).fit(Xfit[tr], y[tr]), Xfit[te])
+    # Reliability of the calibration, itself cross-fitted (each fold mapped by the others' isotonic fit).
+    oof_p = np.zeros(len(y))
+    for tr, te in folds:
+        oof_p[te] = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof[tr], y[tr]).predict(oof[te])
+    iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
+    model = make_model(a.model).fit(Xfit[fit_rows], y[fit_rows])
+    dXfit = dX.copy()
+    dXfit[:, [i for i in range(len(names)) if i not in keep]] = 0
+    dm = margin(model, dXfit)
+    dp = iso.predict(dm)
+
+    geometric = -site_rank.astype(float)
+    cv, n_train = figures(train, group, site_rank, centers, oof)
+    cv_geo, _ = figures(train, group, site_rank, centers, geometric)
+    dv, n_dev = figures(dev, dgroup, dsite_rank, dcenters, dm)
+    dv_geo, _ = figures(dev, dgroup, dsite_rank, dcenters, -dsite_rank.astype(float))
+    fmt = lambda f: f"DCC {f['dcc'][0]:.3f} / {f['dcc'][1]:.3f}  DCA {f['dca'][0]:.3f} / {f['dca'][1]:.3f}"
+    print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
+          f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive)")
+    print(f"pockets-train CV ({n_train} ligands): {fmt(cv)}   geometric: {fmt(cv_geo)}")
+    print(f"pockets-dev     ({n_dev} ligands): {fmt(dv)}   geometric: {fmt(dv_geo)}")
+    s = site_rank > 0
+    print(f"Brier (sites, out-of-fold, cross-fitted calibration): {np.mean((oof_p[s] - y[s]) ** 2):.4f}, "
+          f"base rate {y[s].mean():.3f}")
+    print("reliability, pockets-train sites out-of-fold:\n" + reliability(oof_p[s], y[s]))
+    ds_ = dsite_rank > 0
+    dy = {"dca": ddca, "dcc": ddcc, "both": ddca & ddcc}[a.label]
+    print("reliability, pockets-dev sites:\n" + reliability(dp[ds_], dy[ds_]))
+    imp = sorted(zip(model.feature_importances_, names), reverse=True)[:12]
+    print("top features: " + ", ".join(f"{n} {v:.3f}" for v, n in imp))
+    if a.check:
+        sys.exit(check(export(model, names, iso), dm[ds_], dp[ds_], dcpp[ds_]))
+    if a.no_write:
+        return
+    with open(os.path.join(ROOT, "molecule", "data", "ligandability.json"), "w") as f:
+        json.dump(export(model, names, iso), f, separators=(",", ":"))
+        f.write("\n")
+    fixture = os.path.join(ROOT, "tests", "data", "ligandability", "pockets-dev.csv")
+    os.makedirs(os.path.dirname(fixture), exist_ok=True)
+    with open(fixture, "w") as f:
+        f.write("structure,kind,cavity_rank," + ",".join(names) + ",margin,probability\n")
+        for i in np.where(ds_)[0]:
+            f.write(",".join(dids[i] + [repr(float(x)) for x in dX[i]] + [repr(float(dm[i])), repr(float(dp[i]))])
+                    + "\n")
+    print("wrote molecule/data/ligandability.json and tests/data/ligandability/pockets-dev.csv")
+
+
+if __name__ == "__main__":
+    main()
