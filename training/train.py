@@ -266,6 +266,11 @@ def main():
     dv, n_dev = figures(dev, dgroup, dsite_rank, dcenters, dm)
     dv_geo, _ = figures(dev, dgroup, dsite_rank, dcenters, -dsite_rank.astype(float))
     fmt = lambda f: f"DCC {f['dcc'][0]:.3f} / {f['dcc'][1]:.3f}  DCA {f['dca'][0]:.3f} / {f['dca'][1]:.3f}"
+    for label, structures, g_, s_, c_ in (("pockets-train", train, group, site_rank, centers),
+                                         ("pockets-dev", dev, dgroup, dsite_rank, dcenters)):
+        missed = sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & (s_ > 0)])
+                     for g, (_, _, _, ligands) in enumerate(structures) for l in ligands)
+        print(f"{label}: {missed} ligands have no site centre within {HIT} A of an atom (no ranking reaches them)")
     print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
           f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive)")
     print(f"pockets-train CV ({n_train} ligands): {fmt(cv)}   geometric: {fmt(cv_geo)}")
