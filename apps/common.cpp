@@ -80,7 +80,7 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
                      "Largest structure file read, MiB, after gzip decompression (a bound on memory)")
           ->capture_default_str()
           ->type_name("MB")
-          ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20))
+          ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20).description(""))
           ->group(group),
   };
 }
@@ -108,11 +108,13 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
       ->check(CLI::PositiveNumber.description(""));
   sub.add_flag("--pores", options.tunnels.pores, "Also find pores: paths across the molecule from solvent to solvent");
   sub.add_option("--ranking", options.ranking,
-                 "Order of the sites: by the ligandability model's probability, or by the geometric score")
-      ->capture_default_str()
+                 "Order of the sites: probability (the ligandability model's) or geometric (the score)")
+      ->default_str("probability")
+      ->type_name("ORDER")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, molecule::SiteRanking>{{"probability", molecule::SiteRanking::probability},
-                                                       {"geometric", molecule::SiteRanking::geometric}}));
+                      std::map<std::string, molecule::SiteRanking>{{"probability", molecule::SiteRanking::probability},
+                                                                   {"geometric", molecule::SiteRanking::geometric}})
+                      .description(""));
 }
 
 CLI::Validator finite_number(double lo, double hi) {
