@@ -10,9 +10,11 @@
 // For a structure, also the solvent-excluded (molecular, Connolly) surface:
 // the SAS union eroded by the probe (alpha::ErodedUnion); null for a point
 // file, whose balls carry no probe, and with --sa-only (it takes several
-// times as long as the SAS).
+// times as long as the SAS). The measuring is molecule::measure_surface
+// (molecule/surface.hpp); this file reads FILE and prints.
 #include <cstdio>
 #include <memory>
+#include <utility>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,13 +24,12 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "alpha/eroded_union.hpp"
 #include "alpha/input_file.hpp"
-#include "alpha/union_of_balls.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "molecule/radii.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/surface.hpp"
 
 namespace alphapocket {
 namespace {
@@ -40,27 +41,35 @@ struct SurfaceOptions {
   bool sa_only = false;
 };
 
-// The balls of FILE, and for a structure file its atoms (names for
-// --per-atom).
-struct Balls {
-  PointSet set;
+// FILE measured (molecule/surface.hpp), and for a structure file its
+// atoms (names for --per-atom).
+struct Measured {
+  molecule::Surface surface;
   std::optional<std::vector<molecule::Atom>> atoms;
 };
 
-Balls read_balls(const InputOptions& opt) {
-  const bool structure = molecule::is_structure_file(opt.file);
-  if (!structure && !opt.weighted) {
-    alpha::read_input_file(opt.file);  // a missing file or a directory is the first thing to say
-    throw std::runtime_error(opt.file +
-                             ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
+Measured measure(const SurfaceOptions& opt) {
+  const InputOptions& in = opt.input;
+  Measured m;
+  if (molecule::is_structure_file(in.file)) {
+    molecule::StructureOptions selection = in.structure;
+    selection.min_atoms = 1;  // one atom has a surface
+    m.atoms = read_structure_file(in.file, selection).atoms;
+    m.surface = naming_file(in.file, [&] { return molecule::measure_surface(*m.atoms, {in.probe, !opt.sa_only}); });
+  } else {
+    if (!in.weighted) {
+      alpha::read_input_file(in.file);  // a missing file or a directory is the first thing to say
+      throw std::runtime_error(in.file +
+                               ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
+    }
+    PointSet set = read_input(in);
+    m.surface = naming_file(in.file, [&] { return molecule::measure_balls(std::move(set.points), std::move(set.weights)); });
   }
-  InputOptions any_size = opt;
-  any_size.structure.min_atoms = 1;  // one atom has a surface (see run_surface)
-  Balls b;
-  std::vector<molecule::Atom> atoms;
-  b.set = read_input(any_size, &atoms);
-  if (structure) b.atoms = std::move(atoms);
-  return b;
+  const molecule::Surface& s = m.surface;
+  spdlog::info("regular triangulation and alpha complex: {:.3f} s; union of balls: {:.3f} s ({} hidden balls)",
+               s.complex_seconds, s.union_seconds, s.hidden);
+  if (s.ms_area) spdlog::info("solvent-excluded surface: {:.3f} s", s.excluded_seconds);
+  return m;
 }
 
 nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
@@ -76,46 +85,29 @@ nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
 }
 
 int run_surface(const SurfaceOptions& opt) {
-  Balls balls = read_balls(opt.input);
-  const std::size_t n = balls.set.points.size();
-  Stopwatch build_time;
-  // Any set of balls has a union, but a triangulation needs four points
-  // not in one plane: far points make a small or flat molecule one.
-  if (alpha::affine_dimension(balls.set.points) < 3) alpha::add_far_points(balls.set.points, balls.set.weights);
-  const std::unique_ptr<alpha::Triangulation> t = triangulate(balls.set, opt.input.file);
-  const alpha::AlphaComplex complex(*t);
-  const double build_seconds = build_time.seconds();
-  Stopwatch measure_time;
-  const alpha::UnionOfBalls u(complex);
-  spdlog::info("regular triangulation and alpha complex: {:.3f} s; union of balls: {:.3f} s ({} hidden balls)",
-               build_seconds, measure_time.seconds(), t->num_hidden());
-  const auto areas = u.ball_areas();
-  const bool structure = balls.atoms.has_value();
-  std::optional<alpha::LayerShare> excluded;  // the eroded union's volume and area
-  if (structure && !opt.sa_only) {
-    Stopwatch ses_time;
-    const alpha::LayerShare layer = alpha::ErodedUnion(u, opt.input.probe).layer();
-    excluded = alpha::LayerShare{u.volume() - layer.volume, layer.area};
-    spdlog::info("solvent-excluded surface: {:.3f} s", ses_time.seconds());
-  }
-  const auto excluded_json = [&](double alpha::LayerShare::*measure) {
-    return excluded ? nlohmann::ordered_json((*excluded).*measure) : nlohmann::ordered_json(nullptr);
+  const Measured m = measure(opt);
+  const molecule::Surface& u = m.surface;
+  const std::size_t n = u.balls;
+  const std::vector<double>& areas = u.ball_areas;
+  const bool structure = m.atoms.has_value();
+  const auto excluded_json = [](const std::optional<double>& measure) {
+    return measure ? nlohmann::ordered_json(*measure) : nlohmann::ordered_json(nullptr);
   };
 
   if (opt.json) {
     nlohmann::ordered_json j;
     j["atoms"] = n;
     j["probe"] = structure ? nlohmann::ordered_json(opt.input.probe) : nlohmann::ordered_json(nullptr);
-    j["sa_area"] = u.area();
-    j["sa_volume"] = u.volume();
-    j["ms_volume"] = excluded_json(&alpha::LayerShare::volume);
-    j["ms_area"] = excluded_json(&alpha::LayerShare::area);
+    j["sa_area"] = u.sa_area;
+    j["sa_volume"] = u.sa_volume;
+    j["ms_volume"] = excluded_json(u.ms_volume);
+    j["ms_area"] = excluded_json(u.ms_area);
     j["radii"] = structure ? std::string(molecule::kRadiusTable) : std::string("file");
     if (opt.per_atom) {
       j["per_atom"] = nlohmann::ordered_json::array();
       for (std::size_t i = 0; i < n; ++i) {
         if (structure) {
-          j["per_atom"].push_back(atom_json((*balls.atoms)[i], areas[i]));
+          j["per_atom"].push_back(atom_json((*m.atoms)[i], areas[i]));
         } else {
           nlohmann::ordered_json p;
           p["index"] = i;
@@ -132,17 +124,17 @@ int run_surface(const SurfaceOptions& opt) {
                                             : std::string("radii from the file"))
                           .c_str());
     std::printf("%s", fmt::format("solvent-accessible area    {:.3f} A^2\nsolvent-accessible volume  {:.3f} A^3\n",
-                                  u.area(), u.volume())
+                                  u.sa_area, u.sa_volume)
                           .c_str());
-    if (excluded)
+    if (u.ms_area)
       std::printf("%s", fmt::format("solvent-excluded area      {:.3f} A^2\nsolvent-excluded volume    {:.3f} A^3\n",
-                                    excluded->area, excluded->volume)
+                                    *u.ms_area, *u.ms_volume)
                             .c_str());
     if (opt.per_atom) {
       std::printf("%s", structure ? "serial name residue seq_num chain area\n" : "index area\n");
       for (std::size_t i = 0; i < n; ++i) {
         if (structure) {
-          const molecule::Atom& a = (*balls.atoms)[i];
+          const molecule::Atom& a = (*m.atoms)[i];
           std::printf("%s", fmt::format("{} {} {} {}{} {} {:.3f}\n", a.serial, a.name, a.residue_name, a.seq_num,
                                         molecule::icode_text(a.icode), a.chain, areas[i])
                                 .c_str());

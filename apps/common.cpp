@@ -17,21 +17,6 @@
 #include "molecule/radii.hpp"
 
 namespace alphapocket {
-namespace {
-
-// Library errors (too few distinct points, all coplanar, too many
-// simplices, ...) are about this input: name the file.
-template <class F>
-auto naming_file(const std::string& file, F&& build) {
-  try {
-    return build();
-  } catch (const alpha::Error& e) {
-    throw std::runtime_error(file + ": " + e.what());
-  }
-}
-
-}  // namespace
-
 void add_input_options(CLI::App& sub, InputOptions& opt) {
   sub.add_option("FILE", opt.file,
                  "Point file (x y z per line; x y z r with --weighted) or structure file (.pdb .ent .cif "

@@ -13,6 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
 #include "alpha/triangulation.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/structure.hpp"
@@ -73,6 +74,17 @@ CLI::Validator output_directory_name();
 // weighted points (always: ProtOr radius + probe, molecule::atom_balls),
 // the atoms themselves into *atoms when asked. Logs what was read.
 PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms = nullptr);
+
+// Library errors (too few distinct points, all coplanar, too many
+// simplices, ...) are about this input: rethrown naming the file, same kind.
+template <class F>
+auto naming_file(const std::string& file, F&& build) {
+  try {
+    return build();
+  } catch (const alpha::Error& e) {
+    throw alpha::in_file(file, e);
+  }
+}
 
 // The triangulation of the points; library errors about the input (too few
 // distinct points, all coplanar, ...) are rethrown naming the file.

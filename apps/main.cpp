@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "alpha/error.hpp"
 #include "alphapocket/version.hpp"
 #include "commands.hpp"
 
@@ -17,7 +19,8 @@ namespace {
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 an error in the input or the output (one line 'ERROR: <file>: <problem>' on "
-    "stderr); 2 a wrong command line. Logs go to stderr (-q: warnings and errors only; -v, -vv: more, e.g. pockets "
+    "stderr); 2 a wrong command line; 5 a limit exceeded (out of memory, too many points); 6 an internal error "
+    "(a bug). Logs go to stderr (-q: warnings and errors only; -v, -vv: more, e.g. pockets "
     "logs every site); results to stdout and the output files.";
 
 // A wrong command line: one ERROR line, exit code 2, as usual for tools.
@@ -134,11 +137,28 @@ int run(int argc, char** argv) {
   return 2;  // unreachable: CLI11 requires one subcommand
 }
 
+// The exit code of an error by its kind (README, "Usage").
+int exit_code(alpha::ErrorKind kind) {
+  switch (kind) {
+    case alpha::ErrorKind::BadInput: return 1;
+    case alpha::ErrorKind::LimitExceeded: return 5;
+    case alpha::ErrorKind::Misuse: break;  // the CLI called the library wrongly: a bug
+    case alpha::ErrorKind::Internal: break;
+  }
+  return 6;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
+  } catch (const alpha::Error& e) {
+    std::fprintf(stderr, "ERROR: %s\n", e.what());
+    return exit_code(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "ERROR: out of memory\n");
+    return 5;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ERROR: %s\n", e.what());
   } catch (...) {

@@ -15,6 +15,7 @@
 #include "depth_oracle.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/surface.hpp"
 
 namespace {
 
@@ -52,6 +53,7 @@ TEST_CASE("molecular surface: the volume of 1fkgA against Monte Carlo", "[surfac
   for (double w : b.weights) radii.push_back(std::sqrt(w));
   const testing::BallUnion sas = union_of(b);
   const double volume = sas.u->volume() - alpha::ErodedUnion(*sas.u, 1.4).layer().volume;
+  CHECK(molecule::measure_surface(atoms).ms_volume == volume);  // the surface job measures the same
   const auto [mc, sigma] = testing::DepthOracle(b.points, radii, 1.4).volume_deeper(1.4, 400000, 11);
   INFO("volume " << volume << " Monte Carlo " << mc << " +- " << sigma);
   CHECK(std::fabs(volume - mc) <= 4.5 * sigma);  // sigma: 0.3 % of the volume

@@ -1,5 +1,5 @@
-// Solvent-accessible surface area of real proteins (alpha::UnionOfBalls on
-// the atoms of molecule::read_structure, ProtOr radius + probe 1.4 A)
+// Solvent-accessible surface area of real proteins (molecule::measure_surface
+// on the atoms of molecule::read_structure, ProtOr radius + probe 1.4 A)
 // against FreeSASA's Lee-Richards with many slices, in total and atom by
 // atom. FreeSASA (Debian: freesasa) is the oracle; without it the test is
 // not built.
@@ -12,10 +12,9 @@
 #include <tuple>
 #include <vector>
 
-#include "alpha/union_of_balls.hpp"
 #include "freesasa_output.hpp"
-#include "molecule/atom_balls.hpp"
 #include "molecule/structure.hpp"
+#include "molecule/surface.hpp"
 
 namespace {
 
@@ -50,10 +49,7 @@ TEST_CASE("surface: SASA equals FreeSASA's Lee-Richards on real proteins, in tot
   for (molecule::Atom& a : molecule::read_structure(file).atoms)
     if (!a.hetero) atoms.push_back(std::move(a));
   REQUIRE(atoms.size() == expected.size());
-  molecule::AtomBalls balls = molecule::atom_balls(atoms, 1.4);
-  const alpha::Triangulation t(std::move(balls.points), std::move(balls.weights));
-  const alpha::AlphaComplex complex(t);
-  const alpha::UnionOfBalls u(complex);
+  const molecule::Surface u = molecule::measure_surface(atoms, {.probe = 1.4, .excluded = false});
 
   double total = 0, worst = 0;
   for (std::size_t i = 0; i < atoms.size(); ++i) {
@@ -61,11 +57,11 @@ TEST_CASE("surface: SASA equals FreeSASA's Lee-Richards on real proteins, in tot
     const auto it = expected.find({a.chain, a.seq_num, a.name});
     REQUIRE(it != expected.end());
     total += it->second;
-    worst = std::max(worst, std::fabs(u.ball_areas()[i] - it->second));
+    worst = std::max(worst, std::fabs(u.ball_areas[i] - it->second));
     INFO(a.chain << " " << a.residue_name << " " << a.seq_num << " " << a.name);
-    CHECK(u.ball_areas()[i] == Approx(it->second).margin(0.05));
+    CHECK(u.ball_areas[i] == Approx(it->second).margin(0.05));
   }
   INFO("worst atom difference " << worst << " A^2");
-  CHECK(u.area() == Approx(total).epsilon(5e-5));  // 100 times tighter than the 0.5 % required
+  CHECK(u.sa_area == Approx(total).epsilon(5e-5));  // 100 times tighter than the 0.5 % required
 }
 #endif

@@ -69,7 +69,7 @@ AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
   const Simplices& s = simplices_;
   ids_ = {Index(t.num_points()), Index(t.num_points() + s.num_edges()),
           Index(t.num_points() + s.num_edges() + s.num_triangles())};
-  if (std::size_t(ids_.cells) + t.num_cells() >= kNever) fail("too many simplices for 32-bit ids");
+  if (std::size_t(ids_.cells) + t.num_cells() >= kNever) fail("too many simplices for 32-bit ids", ErrorKind::LimitExceeded);
   rank_critical();
   bound_faces();
 }
@@ -278,7 +278,7 @@ Simplex AlphaComplex::simplex(Index g) const {
 double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rounded_size(simplex(spectrum_[rank])); }
 
 Index AlphaComplex::level(double alpha_sq) const {
-  if (std::isnan(alpha_sq)) fail("alpha complex: alpha_sq is not a number");
+  if (std::isnan(alpha_sq)) fail("alpha complex: alpha_sq is not a number", ErrorKind::Misuse);
   SizeKernel sizes = size_kernel();
   // First rank whose value exceeds alpha_sq.
   Index lo = 0, hi = Index(spectrum_.size());

@@ -601,7 +601,7 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
   const AlphaComplex& ac = balls.complex();
   const Triangulation& t = ac.triangulation();
   const Simplices& s = ac.simplices();
-  if (!(r >= 0) || !std::isfinite(r)) fail("eroded union: the erosion radius must be a number >= 0");
+  if (!(r >= 0) || !std::isfinite(r)) fail("eroded union: the erosion radius must be a number >= 0", ErrorKind::Misuse);
   const std::size_t n = t.num_points();
   shell_factor_.assign(n, 0.0);
   contact_factor_.assign(n, 0.0);
@@ -610,7 +610,7 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
     const double radius = std::sqrt(t.weight(i));
     if (radius < r)
       fail("eroded union: ball " + std::to_string(i) + " of radius " + std::to_string(radius) +
-           " on the boundary is smaller than the erosion radius " + std::to_string(r));
+           " on the boundary is smaller than the erosion radius " + std::to_string(r), ErrorKind::Misuse);
     const double inner = radius - r;
     shell_factor_[i] = (radius - inner) * (radius * radius + radius * inner + inner * inner) / (3 * radius * radius);
     contact_factor_[i] = inner * inner / (radius * radius);

@@ -218,7 +218,7 @@ void cycle_pairs(const Simplices& s, const std::vector<std::uint64_t>& edges,
     const std::size_t at = reduced.size();
     reduced.push_back(0);
     for (Index x = column.pop_pivot(); x != kNone; x = column.pop_pivot()) reduced.push_back(x);
-    if (reduced.size() >= kNone) fail("persistence: too many reduced entries for 32-bit offsets");
+    if (reduced.size() >= kNone) fail("persistence: too many reduced entries for 32-bit offsets", ErrorKind::LimitExceeded);
     reduced[at] = Index(reduced.size() - at - 1);
     reduced_at[p] = Index(at);
   }

@@ -22,16 +22,16 @@ std::vector<std::vector<Index>> persistent_basins(const AlphaComplex& ac, Index 
                                                   const BasinMerging& merging) {
   const Triangulation& t = ac.triangulation();
   const Simplices& s = ac.simplices();
-  if (!(merging.threshold >= 0)) fail("persistent_basins: threshold must be >= 0");
+  if (!(merging.threshold >= 0)) fail("persistent_basins: threshold must be >= 0", ErrorKind::Misuse);
   if (!merging.mass.empty() && merging.mass.size() != cells.size())
     fail("persistent_basins: " + std::to_string(merging.mass.size()) + " masses for " + std::to_string(cells.size()) +
-         " cells");
+         " cells", ErrorKind::Misuse);
   for (double m : merging.mass)
-    if (!(m >= 0) || !std::isfinite(m)) fail("persistent_basins: a mass is not a finite value >= 0");
-  if (!std::is_sorted(cells.begin(), cells.end())) fail("persistent_basins: cells not sorted");
+    if (!(m >= 0) || !std::isfinite(m)) fail("persistent_basins: a mass is not a finite value >= 0", ErrorKind::Misuse);
+  if (!std::is_sorted(cells.begin(), cells.end())) fail("persistent_basins: cells not sorted", ErrorKind::Misuse);
   for (Index c : cells)
     if (c >= t.num_cells() || t.is_infinite(c) || ac.cell_entry(c) < level)
-      fail("persistent_basins: cell " + std::to_string(c) + " is not an empty finite cell");
+      fail("persistent_basins: cell " + std::to_string(c) + " is not an empty finite cell", ErrorKind::Misuse);
   const auto position = [&](Index c) -> Index {
     const auto it = std::lower_bound(cells.begin(), cells.end(), c);
     return it != cells.end() && *it == c ? Index(it - cells.begin()) : kNone;

@@ -53,7 +53,7 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   // Triangles: each finite facet once, from the cell with the smaller id.
   // Facet i of a cell misses vertex i, so its edges are the local edges
   // avoiding i, listed opposite to the facet's vertices f[0], f[1], f[2].
-  if (t.num_cells() >= (std::size_t(1) << 30)) fail("too many cells for 32-bit triangle records");
+  if (t.num_cells() >= (std::size_t(1) << 30)) fail("too many cells for 32-bit triangle records", ErrorKind::LimitExceeded);
   assign_huge(cell_triangles_, 4 * nc, kNone);
   reserve_huge(triangle_facets_, 2 * nc - 3 * infinite_cells / 2);
   reserve_huge(triangle_edges_, 2 * nc - 3 * infinite_cells / 2);
@@ -76,7 +76,7 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   }
   cell_edges = {};
   // Each vertex's edges, as compressed rows (32-bit offsets).
-  if (2 * edges_.size() >= kNone) fail("too many edges for 32-bit incidence offsets");
+  if (2 * edges_.size() >= kNone) fail("too many edges for 32-bit incidence offsets", ErrorKind::LimitExceeded);
   assign_huge(vertex_edge_start_, np + 1, Index(0));
   for (const auto& e : edges_) ++vertex_edge_start_[e[0] + 1], ++vertex_edge_start_[e[1] + 1];
   for (std::size_t v = 0; v < np; ++v) vertex_edge_start_[v + 1] += vertex_edge_start_[v];

@@ -299,7 +299,7 @@ int sign(double x) { return (x > 0) - (x < 0); }
 }  // namespace
 
 Simplex::Simplex(std::span<const Index> vs) : n(static_cast<int>(vs.size())) {
-  if (n < 1 || n > 4) fail("Simplex: needs 1 to 4 vertices");
+  if (n < 1 || n > 4) fail("Simplex: needs 1 to 4 vertices", ErrorKind::Misuse);
   std::copy(vs.begin(), vs.end(), v.begin());
 }
 
@@ -323,7 +323,7 @@ namespace {
 // Unused slots are set to kNone, the largest index, and all four sorted by
 // a branch-free network: random vertex orders cost no mispredictions.
 Simplex sorted(const Simplex& s) {
-  if (s.n < 1 || s.n > 4) fail("sizes: a simplex has 1 to 4 vertices");
+  if (s.n < 1 || s.n > 4) fail("sizes: a simplex has 1 to 4 vertices", ErrorKind::Misuse);
   Simplex r = s;
   for (int i = 1; i < 4; ++i) r.v[i] = i < s.n ? s.v[i] : kNone;
   auto order = [&](int i, int j) {
@@ -498,7 +498,7 @@ int SizeKernel::compare(const Simplex& a, const Size& sa, const Simplex& b, cons
 }
 
 int SizeKernel::compare(const Simplex& a, double alpha_sq) {
-  if (std::isnan(alpha_sq)) fail("sizes: alpha_sq is not a number");
+  if (std::isnan(alpha_sq)) fail("sizes: alpha_sq is not a number", ErrorKind::Misuse);
   if (std::isinf(alpha_sq)) {
     ++stats_.compare.filtered;
     return alpha_sq > 0 ? -1 : 1;
@@ -527,7 +527,7 @@ bool SizeKernel::attached(const Simplex& s, Index q) { return attached_any(s, st
 
 bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs) {
   const Simplex s = sorted(simplex);
-  if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached");
+  if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached", ErrorKind::Misuse);
   bool ok = true;
   const Local<Approx> l = approx_local(pts_, w_, s, ok);
   const PowerFrame<Approx> frame = power_frame(l);

@@ -24,8 +24,8 @@ constexpr double kMinExtent = 1e-100;
 void check_input(const std::vector<Vec3>& points, const std::vector<double>& weights) {
   if (!weights.empty() && weights.size() != points.size())
     fail("got " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
-         " points");
-  if (points.size() >= kInfinite) fail("too many points: " + std::to_string(points.size()));
+         " points", ErrorKind::Misuse);
+  if (points.size() >= kInfinite) fail("too many points: " + std::to_string(points.size()), ErrorKind::LimitExceeded);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3& p = points[i];
     for (double v : {p.x, p.y, p.z})
@@ -306,7 +306,7 @@ private:
         free_cells_.pop_back();
       } else {
         // Cell ids are 32-bit, kNone and kInfinite reserved (some 6e8 points).
-        if (cells_.size() >= kInfinite) fail("too many cells for 32-bit cell ids");
+        if (cells_.size() >= kInfinite) fail("too many cells for 32-bit cell ids", ErrorKind::LimitExceeded);
         c = static_cast<Index>(cells_.size());
         cells_.push_back({});
         if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);

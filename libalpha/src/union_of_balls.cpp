@@ -221,7 +221,7 @@ double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 }  // namespace
 
 void add_far_points(std::vector<Vec3>& points, std::vector<double>& weights) {
-  if (weights.size() != points.size()) fail("add_far_points: one weight per point is needed");
+  if (weights.size() != points.size()) fail("add_far_points: one weight per point is needed", ErrorKind::Misuse);
   Vec3 lo = points.empty() ? Vec3{} : points.front(), hi = lo;
   for (const Vec3& p : points) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};

@@ -22,7 +22,7 @@ double clearance_at(const Vec3& x, const Vertices& vs, const Triangulation& t, s
 VoidGraph::VoidGraph(const AlphaComplex& ac, std::span<const double> radii)
     : t_(&ac.triangulation()), s_(&ac.simplices()) {
   const Triangulation& t = *t_;
-  if (radii.size() != t.num_points()) throw Error("void graph: one radius per point needed");
+  if (radii.size() != t.num_points()) throw Error("void graph: one radius per point needed", ErrorKind::Misuse);
   SizeKernel sizes = ac.size_kernel();
   const double inf = std::numeric_limits<double>::infinity();
   position_.assign(num_nodes(), Vec3{inf, inf, inf});

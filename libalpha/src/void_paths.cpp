@@ -20,7 +20,7 @@ bool stops(const std::vector<bool>& stop, Index n) { return !stop.empty() && sto
 template <class Better, class Extend>
 PathTree search(const VoidGraph& g, std::span<const Index> sources, const std::vector<bool>& stop, double source_value,
                 Better better, Extend extend) {
-  if (!stop.empty() && stop.size() != g.num_nodes()) throw Error("void paths: one stop flag per node needed");
+  if (!stop.empty() && stop.size() != g.num_nodes()) throw Error("void paths: one stop flag per node needed", ErrorKind::Misuse);
   PathTree tree{std::vector<double>(g.num_nodes(), kNaN), std::vector<Index>(g.num_nodes(), kNone)};
   using Entry = std::pair<double, Index>;
   const auto after = [&](const Entry& a, const Entry& b) {  // priority_queue puts the "largest" on top
@@ -29,7 +29,7 @@ PathTree search(const VoidGraph& g, std::span<const Index> sources, const std::v
   };
   std::priority_queue<Entry, std::vector<Entry>, decltype(after)> queue(after);
   for (const Index s : sources) {
-    if (!g.is_node(s)) throw Error("void paths: a source is not a node");
+    if (!g.is_node(s)) throw Error("void paths: a source is not a node", ErrorKind::Misuse);
     tree.value[s] = source_value;
     queue.emplace(source_value, s);
   }

@@ -9,15 +9,6 @@
 
 namespace molecule {
 
-std::string_view failure_name(FailureKind kind) {
-  switch (kind) {
-    case FailureKind::BadInput: return "bad_input";
-    case FailureKind::LimitExceeded: return "limit_exceeded";
-    case FailureKind::Internal: break;
-  }
-  return "internal";
-}
-
 PocketRun Analysis::run() const {
   PocketRun r;
   r.file = file;
@@ -48,7 +39,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
       try {
         a.radius_fallbacks = apply_radius_file(read_radius_file(options.radii_file), a.structure.atoms);
       } catch (const alpha::Error& e) {
-        throw AnalysisError(FailureKind::BadInput, e.what());  // names the radius file
+        throw AnalysisError(e.kind(), e.what());  // names the radius file
       }
     }
     const std::size_t atoms = a.structure.atoms.size();
@@ -60,14 +51,14 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     try {
       a.search = search_pockets(a.structure, options.cavities, options.ranking);
     } catch (const alpha::Error& e) {
-      throw AnalysisError(FailureKind::BadInput, file + ": " + e.what());  // e.g. all atoms in one plane
+      throw AnalysisError(e.kind(), alpha::in_file(file, e).what());  // e.g. all atoms in one plane
     }
     const auto start = std::chrono::steady_clock::now();
     std::vector<TunnelStart> starts;
     try {
       starts = tunnel_starts(options.tunnels_from, a.structure, a.search.cavities);
     } catch (const alpha::Error& e) {
-      throw AnalysisError(FailureKind::BadInput, file + ": " + e.what());
+      throw AnalysisError(e.kind(), alpha::in_file(file, e).what());
     }
     for (const TunnelStart& s : starts) a.tunnel_starts.push_back(s.label);
     std::vector<double> radii;
@@ -78,7 +69,9 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
   } catch (const AnalysisError&) {
     throw;
   } catch (const StructureError& e) {
-    throw AnalysisError(FailureKind::BadInput, e.what());
+    throw AnalysisError(e.kind(), e.what());  // names the file
+  } catch (const alpha::Error& e) {
+    throw AnalysisError(e.kind(), alpha::in_file(file, e).what());
   } catch (const std::bad_alloc&) {
     throw AnalysisError(FailureKind::LimitExceeded, file + ": out of memory");
   } catch (const std::exception& e) {
@@ -96,6 +89,12 @@ Analysis analyse(const std::string& file, const AnalysisOptions& options) {
 Analysis analyse_content(const std::string& file, std::string_view content, const AnalysisOptions& options) {
   return analysed(file, options, [&] { return parse_structure(content, file, options.structure); });
 }
+
+Analysis analyse_structure(const std::string& name, Structure structure, const AnalysisOptions& options) {
+  return analysed(name, options, [&] { return std::move(structure); });
+}
+
+std::string report_text(const Analysis& analysis) { return report_file_text(analysis.report); }
 
 std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out) {
   return out.write(analysis.run(), analysis.report);

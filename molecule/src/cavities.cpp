@@ -29,22 +29,22 @@ void check_input(const alpha::AlphaComplex& ac, const std::vector<double>& radii
   const alpha::Triangulation& t = ac.triangulation();
   if (radii.size() != t.num_points())
     alpha::fail("find_cavities: " + std::to_string(radii.size()) + " radii for " + std::to_string(t.num_points()) +
-                " points");
-  if (!(options.probe >= 0) || !std::isfinite(options.probe)) alpha::fail("find_cavities: probe must be >= 0");
-  if (!(options.split_persistence >= 0)) alpha::fail("find_cavities: split_persistence must be >= 0");
+                " points", alpha::ErrorKind::Misuse);
+  if (!(options.probe >= 0) || !std::isfinite(options.probe)) alpha::fail("find_cavities: probe must be >= 0", alpha::ErrorKind::Misuse);
+  if (!(options.split_persistence >= 0)) alpha::fail("find_cavities: split_persistence must be >= 0", alpha::ErrorKind::Misuse);
   if (std::isnan(options.split_volume) || std::isnan(options.split_min_volume))
-    alpha::fail("find_cavities: split_volume or split_min_volume is not a number");
+    alpha::fail("find_cavities: split_volume or split_min_volume is not a number", alpha::ErrorKind::Misuse);
   if (!(options.burial_radius >= 0) || !std::isfinite(options.burial_radius))
-    alpha::fail("find_cavities: burial_radius must be >= 0");
-  if (std::isnan(options.min_volume)) alpha::fail("find_cavities: min_volume is not a number");
+    alpha::fail("find_cavities: burial_radius must be >= 0", alpha::ErrorKind::Misuse);
+  if (std::isnan(options.min_volume)) alpha::fail("find_cavities: min_volume is not a number", alpha::ErrorKind::Misuse);
   for (Index i = 0; i < radii.size(); ++i) {
     const double r = radii[i];
     if (!(r >= 0) || !std::isfinite(r))
-      alpha::fail("find_cavities: radius of point " + std::to_string(i) + " is not >= 0");
+      alpha::fail("find_cavities: radius of point " + std::to_string(i) + " is not >= 0", alpha::ErrorKind::Misuse);
     const double w = ball_weight(r, options.probe);
     if (std::fabs(t.weight(i) - w) > 1e-9 * std::max(1.0, w))
       alpha::fail("find_cavities: the complex's weight of point " + std::to_string(i) +
-                  " is not (radius + probe)^2");
+                  " is not (radius + probe)^2", alpha::ErrorKind::Misuse);
   }
 }
 

@@ -158,7 +158,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   // Invalid UTF-8 in the input's names is replaced, not an error.
   if (selection_.report)
     files.emplace_back("report.json",
-                       report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+                       report_file_text(report));
   if (selection_.csv) files.emplace_back("pockets.csv", pockets_csv(run));
   if (selection_.pml) {
     StructureCopy copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " +

@@ -198,7 +198,7 @@ std::string residue_id(const Atom& a) {
 
 std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
   for (const alpha::Index i : indices)
-    if (i >= atoms.size()) alpha::fail("atom index " + std::to_string(i) + " out of range");
+    if (i >= atoms.size()) alpha::fail("atom index " + std::to_string(i) + " out of range", alpha::ErrorKind::Misuse);
   // By residue, then file order: the first of each run is its residue's first atom.
   std::vector<alpha::Index> by_residue = indices;
   std::sort(by_residue.begin(), by_residue.end(), [&](alpha::Index a, alpha::Index b) {
@@ -280,6 +280,10 @@ json pocket_report(const PocketRun& run) {
       {"sites", site_list(run)},
       {"tunnels", tunnel_list(run)},
   };
+}
+
+std::string report_file_text(const nlohmann::ordered_json& report) {
+  return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string pockets_csv(const PocketRun& run) {

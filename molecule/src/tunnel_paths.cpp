@@ -335,8 +335,8 @@ private:
 
 std::vector<TunnelPath> find_tunnel_paths(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
                                           const std::vector<TunnelStart>& starts, const TunnelOptions& options) {
-  if (radii.size() != ac.triangulation().num_points()) throw alpha::Error("tunnels: one radius per atom needed");
-  if (!(options.probe > 0) || !(options.step > 0)) throw alpha::Error("tunnels: the probe and the step must be positive");
+  if (radii.size() != ac.triangulation().num_points()) throw alpha::Error("tunnels: one radius per atom needed", alpha::ErrorKind::Misuse);
+  if (!(options.probe > 0) || !(options.step > 0)) throw alpha::Error("tunnels: the probe and the step must be positive", alpha::ErrorKind::Misuse);
   TunnelSearch search(ac, radii, options);
   std::vector<TunnelPath> out;
   for (std::size_t i = 0; i < starts.size(); ++i) {

@@ -1,16 +1,36 @@
-// Library errors: one exception type, thrown through one function.
-// Library code never prints or exits; callers decide what to do.
+// Library errors: one exception type with a category a caller can act on,
+// thrown through one function. Library code never prints or exits; callers
+// decide what to do (the CLI's exit code per category: apps/main.cpp).
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace alpha {
 
-class Error : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
+enum class ErrorKind {
+  BadInput,       // the data cannot be used (unreadable file, coplanar points): skip this input
+  LimitExceeded,  // too large for the library (32-bit ids, a size limit, memory): a smaller input may work
+  Misuse,         // the caller broke an API contract (mismatched sizes, negative radius option): a bug upstream
+  Internal,       // anything else (a bug here, a full disk)
 };
 
-[[noreturn]] void fail(const std::string& message);
+// "bad_input", "limit_exceeded", "misuse", "internal".
+std::string_view error_kind_name(ErrorKind kind);
+
+class Error : public std::runtime_error {
+public:
+  explicit Error(const std::string& message, ErrorKind kind = ErrorKind::BadInput)
+      : std::runtime_error(message), kind_(kind) {}
+  ErrorKind kind() const { return kind_; }
+
+private:
+  ErrorKind kind_;
+};
+
+[[noreturn]] void fail(const std::string& message, ErrorKind kind = ErrorKind::BadInput);
+
+// The same error (same kind) about `file`: "<file>: <message>".
+Error in_file(const std::string& file, const Error& e);
 
 }  // namespace alpha

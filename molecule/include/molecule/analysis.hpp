@@ -2,10 +2,11 @@
 // chosen output files. `alphapocket pockets` and `alphapocket batch` both
 // run a structure through this, so the two cannot drift apart.
 //
-// Failures come back as AnalysisError with a category (what batch's
-// failures.tsv records): bad input (the file cannot be read, or its atoms
-// make no 3D complex), limit exceeded (more atoms than allowed, out of
-// memory) or internal (anything else: a bug, a full disk).
+// Failures come back as AnalysisError, an alpha::Error whose kind() is the
+// category (what batch's failures.tsv records): bad input (the file cannot
+// be read, or its atoms make no 3D complex), limit exceeded (more atoms than
+// allowed, out of memory), misuse (options out of range) or internal
+// (anything else: a bug, a full disk).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -25,21 +26,19 @@
 
 namespace molecule {
 
-enum class FailureKind { BadInput, LimitExceeded, Internal };
+using FailureKind = alpha::ErrorKind;
 
-// "bad_input", "limit_exceeded", "internal".
-std::string_view failure_name(FailureKind kind);
+// "bad_input", "limit_exceeded", "misuse", "internal".
+inline std::string_view failure_name(FailureKind kind) { return alpha::error_kind_name(kind); }
 
 class AnalysisError : public alpha::Error {
 public:
   AnalysisError(FailureKind kind, const std::string& message, bool skipped = false)
-      : alpha::Error(message), kind_(kind), skipped_(skipped) {}
-  FailureKind kind() const { return kind_; }
+      : alpha::Error(message, kind), skipped_(skipped) {}
   // Not attempted: over AnalysisOptions::max_atoms.
   bool skipped() const { return skipped_; }
 
 private:
-  FailureKind kind_;
   bool skipped_;
 };
 
@@ -77,6 +76,12 @@ struct Analysis {
 Analysis analyse(const std::string& file, const AnalysisOptions& options);
 // The same from the file's bytes (read by the caller, e.g. to checksum them).
 Analysis analyse_content(const std::string& file, std::string_view content, const AnalysisOptions& options);
+// The same from atoms already read (e.g. given as arrays); `name` stands for
+// the file in messages and the report (options.structure is not applied).
+Analysis analyse_structure(const std::string& name, Structure structure, const AnalysisOptions& options);
+
+// report.json's text: the report, indented, as written into OUTDIR.
+std::string report_text(const Analysis& analysis);
 
 // Writes the selected outputs (options.outputs) into `out`. Returns the
 // names written; warnings in out.warnings().

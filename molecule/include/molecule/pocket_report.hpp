@@ -65,6 +65,8 @@ std::string molecule_mesh_path(const std::string& format);
 std::string csv_field(const std::string& s);
 
 nlohmann::ordered_json pocket_report(const PocketRun& run);
+// report.json's text: indented by 2, invalid UTF-8 in names replaced (U+FFFD).
+std::string report_file_text(const nlohmann::ordered_json& report);
 std::string pockets_csv(const PocketRun& run);
 // tunnels.csv (one row per entry of report.json's tunnels) and
 // tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,

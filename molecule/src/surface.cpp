@@ -1,0 +1,79 @@
+#include "molecule/surface.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/eroded_union.hpp"
+#include "alpha/error.hpp"
+#include "alpha/triangulation.hpp"
+#include "alpha/union_of_balls.hpp"
+#include "molecule/atom_balls.hpp"
+
+namespace molecule {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// erode >= 0: the MS surface too, the union eroded by that probe.
+Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, std::optional<double> erode) {
+  if (points.size() != weights.size())
+    alpha::fail("surface: " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
+                    " balls",
+                alpha::ErrorKind::Misuse);
+  if (points.empty()) alpha::fail("surface: no balls");
+  Surface s;
+  s.balls = points.size();
+  auto start = std::chrono::steady_clock::now();
+  // Any set of balls has a union, but a triangulation needs four points
+  // not in one plane: far points make a small or flat molecule one.
+  if (alpha::affine_dimension(points) < 3) alpha::add_far_points(points, weights);
+  const alpha::Triangulation t(std::move(points), std::move(weights));
+  const alpha::AlphaComplex complex(t);
+  s.complex_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const alpha::UnionOfBalls u(complex);
+  s.union_seconds = seconds_since(start);
+  s.hidden = t.num_hidden();
+  s.sa_area = u.area();
+  s.sa_volume = u.volume();
+  const auto areas = u.ball_areas();
+  s.ball_areas.assign(areas.begin(), areas.begin() + s.balls);  // not the far points
+  if (erode) {
+    start = std::chrono::steady_clock::now();
+    const alpha::LayerShare layer = alpha::ErodedUnion(u, *erode).layer();
+    s.ms_volume = u.volume() - layer.volume;
+    s.ms_area = layer.area;
+    s.excluded_seconds = seconds_since(start);
+  }
+  return s;
+}
+
+}  // namespace
+
+Surface measure_surface(const std::vector<Atom>& atoms, const SurfaceOptions& options) {
+  if (!(options.probe >= 0) || !std::isfinite(options.probe))
+    alpha::fail("surface: the probe must be a number >= 0", alpha::ErrorKind::Misuse);
+  AtomBalls balls = atom_balls(atoms, options.probe);
+  return measured(std::move(balls.points), std::move(balls.weights),
+                  options.excluded ? std::optional<double>(options.probe) : std::nullopt);
+}
+
+Surface measure_balls(std::vector<alpha::Vec3> centres, std::vector<double> weights) {
+  return measured(std::move(centres), std::move(weights), std::nullopt);
+}
+
+Surface surface_of_file(const std::string& path, const StructureOptions& selection, const SurfaceOptions& options) {
+  const Structure structure = read_structure(path, selection);
+  try {
+    return measure_surface(structure.atoms, options);
+  } catch (const alpha::Error& e) {
+    throw alpha::in_file(path, e);
+  }
+}
+
+}  // namespace molecule

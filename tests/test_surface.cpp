@@ -1,0 +1,101 @@
+// The surface job (molecule::measure_surface, measure_balls) on closed
+// forms, flat and tiny inputs, and its error kinds; analyse's error kinds.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "alpha/error.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/surface.hpp"
+
+namespace {
+
+using std::numbers::pi;
+
+molecule::Atom atom(double x, double y, double z, double radius) {
+  molecule::Atom a;
+  a.name = "C";
+  a.element = "C";
+  a.residue_name = "UNK";
+  a.position = {x, y, z};
+  a.radius = radius;
+  return a;
+}
+
+template <class F>
+alpha::ErrorKind kind_of(F&& f) {
+  try {
+    f();
+  } catch (const alpha::Error& e) {
+    return e.kind();
+  }
+  FAIL("no alpha::Error thrown");
+  return alpha::ErrorKind::Internal;
+}
+
+}  // namespace
+
+TEST_CASE("surface job: one ball and two overlapping balls in closed form") {
+  const molecule::Surface one = molecule::measure_surface({atom(1, 2, 3, 1.5)}, {.probe = 0.5});
+  CHECK(one.balls == 1);
+  CHECK(one.sa_area == Approx(4 * pi * 4).epsilon(1e-12));
+  CHECK(one.sa_volume == Approx(4.0 / 3 * pi * 8).epsilon(1e-12));
+  CHECK(*one.ms_volume == Approx(4.0 / 3 * pi * 1.5 * 1.5 * 1.5).epsilon(1e-12));  // one ball: its own MS
+  CHECK(*one.ms_area == Approx(4 * pi * 1.5 * 1.5).epsilon(1e-12));
+  // Two unit balls 1 apart (no probe): each loses a cap of height 1/2.
+  const molecule::Surface two = molecule::measure_balls({{0, 0, 0}, {1, 0, 0}}, {1, 1});
+  CHECK(two.sa_area == Approx(2 * (4 * pi - 2 * pi * 0.5)).epsilon(1e-12));
+  CHECK(two.sa_volume == Approx(2 * (4.0 / 3 * pi) - 2 * pi * 0.25 * (1 - 0.5 / 3)).epsilon(1e-12));
+  CHECK(two.ball_areas.size() == 2);
+  CHECK(two.ball_areas[0] == Approx(3 * pi).epsilon(1e-12));
+  CHECK_FALSE(two.ms_area.has_value());  // bare balls: no probe, no MS surface
+}
+
+TEST_CASE("surface job: flat molecules, --sa-only, determinism") {
+  // Three atoms in a line: far points make them span 3D; areas per atom only.
+  const std::vector<molecule::Atom> line{atom(0, 0, 0, 1.7), atom(1.5, 0, 0, 1.7), atom(3, 0, 0, 1.7)};
+  const molecule::Surface s = molecule::measure_surface(line, {.probe = 1.4, .excluded = false});
+  CHECK(s.ball_areas.size() == 3);
+  CHECK(s.ball_areas[0] + s.ball_areas[1] + s.ball_areas[2] == Approx(s.sa_area).epsilon(1e-12));
+  CHECK(s.ball_areas[0] == s.ball_areas[2]);
+  CHECK_FALSE(s.ms_area.has_value());
+  const molecule::Surface again = molecule::measure_surface(line, {.probe = 1.4, .excluded = false});
+  CHECK(again.sa_area == s.sa_area);
+  CHECK(again.ball_areas == s.ball_areas);
+}
+
+TEST_CASE("surface job: error kinds, and the file named") {
+  CHECK(kind_of([] { molecule::measure_surface({atom(0, 0, 0, 1)}, {.probe = -1}); }) == alpha::ErrorKind::Misuse);
+  CHECK(kind_of([] { molecule::measure_balls({{0, 0, 0}}, {1, 2}); }) == alpha::ErrorKind::Misuse);
+  CHECK(kind_of([] { molecule::measure_balls({}, {}); }) == alpha::ErrorKind::BadInput);
+  CHECK(kind_of([] { molecule::measure_balls({{0, 0, 0}, {1, 0, 0}}, {1, -1}); }) == alpha::ErrorKind::BadInput);
+  const std::string missing = std::string(ALPHAPOCKET_TEST_DATA) + "/missing.pdb";
+  try {
+    molecule::surface_of_file(missing, {});
+    FAIL("no error");
+  } catch (const alpha::Error& e) {
+    CHECK(e.kind() == alpha::ErrorKind::BadInput);
+    CHECK(std::string(e.what()).starts_with(missing + ": "));
+  }
+}
+
+TEST_CASE("analyse: atoms in one plane are bad input naming the structure, a negative probe misuse") {
+  molecule::Structure flat;
+  for (int i = 0; i < 25; ++i) flat.atoms.push_back(atom(3 * (i % 5), 3 * (i / 5), 0, 1.7));
+  try {
+    molecule::analyse_structure("flat", flat, {});
+    FAIL("no error");
+  } catch (const molecule::AnalysisError& e) {
+    CHECK(e.kind() == alpha::ErrorKind::BadInput);
+    CHECK(std::string(e.what()).starts_with("flat: "));
+    CHECK(std::string(e.what()).find("coplanar") != std::string::npos);
+  }
+  molecule::Structure ball = flat;
+  ball.atoms.push_back(atom(6, 6, 5, 1.7));
+  molecule::AnalysisOptions options;
+  options.cavities.probe = -1;
+  CHECK(kind_of([&] { molecule::analyse_structure("ball", ball, options); }) == alpha::ErrorKind::Misuse);
+}
