@@ -37,6 +37,7 @@
 #include "molecule/batch_tables.hpp"
 #include "molecule/checksum.hpp"
 #include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
 #include "progress.hpp"
 
 namespace alphapocket {
@@ -195,7 +196,7 @@ private:
       molecule::write_outputs(analysis, out);
       for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
       r.status = "ok";
-      r.rows = molecule::report_rows(analysis.report);
+      r.rows = molecule::report_rows(analysis.report->json);
     } catch (const molecule::AnalysisError& e) {
       failed(e.skipped() ? "skipped" : "failed", e.kind(), e.what());
     } catch (const std::bad_alloc&) {

@@ -201,7 +201,7 @@ int run_pockets(const PocketsOptions& opt) {
                total_time.seconds());
 
   if (opt.json) {
-    std::puts(analysis.report.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
+    std::puts(analysis.report->json.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print_summary(opt, outdir, analysis.structure, analysis.search.cavities);
     print_paths(analysis);

@@ -6,6 +6,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
+#include "exact_size.hpp"  // libalpha/src: GMP
 #include "point_sets.hpp"
 
 using namespace alpha;
@@ -69,7 +70,7 @@ std::size_t misordered(const Triangulation& t, const std::vector<std::pair<Index
   SizeKernel exact(t.points().data(), t.weighted() ? t.weights().data() : nullptr);
   std::size_t wrong = 0;
   for (std::size_t k = 1; k < entries.size(); ++k) {
-    const int c = sgn(exact.exact_size(entries[k - 1].second) - exact.exact_size(entries[k].second));
+    const int c = sgn(exact_size(exact, entries[k - 1].second) - exact_size(exact, entries[k].second));
     const bool same_rank = entries[k - 1].first == entries[k].first;
     wrong += same_rank ? c != 0 : c >= 0;
     ties += same_rank;

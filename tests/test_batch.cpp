@@ -16,6 +16,8 @@
 #include "alpha/error.hpp"
 #include "alpha/input_file.hpp"
 #include "molecule/analysis.hpp"
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
 #include "molecule/batch_inputs.hpp"
 #include "molecule/batch_record.hpp"
 #include "molecule/checksum.hpp"
@@ -135,7 +137,7 @@ TEST_CASE("analysis: each site's mean pLDDT is that of its lining residues; null
   options.version = "test";
   const molecule::Analysis a = molecule::analyse(kAfCif, options);
   const auto b = residue_b(a.structure);
-  const nlohmann::ordered_json& r = a.report;
+  const nlohmann::ordered_json& r = a.report->json;
   REQUIRE(r["input"]["predicted"] == true);
   REQUIRE(!r["sites"].empty());
   for (const auto& site : r["sites"]) {
@@ -149,8 +151,8 @@ TEST_CASE("analysis: each site's mean pLDDT is that of its lining residues; null
     CHECK(cavity["mean_plddt"] == site["mean_plddt"]);
   }
   const molecule::Analysis x = molecule::analyse(kData + "/1fkgA.pdb", options);
-  CHECK(x.report["molecule"]["mean_plddt"].is_null());
-  for (const auto& site : x.report["sites"]) CHECK(site["mean_plddt"].is_null());
+  CHECK(x.report->json["molecule"]["mean_plddt"].is_null());
+  for (const auto& site : x.report->json["sites"]) CHECK(site["mean_plddt"].is_null());
 }
 
 TEST_CASE("analysis: failures come with their category", "[batch]") {

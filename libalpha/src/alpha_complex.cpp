@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "alpha/error.hpp"
+#include "exact_size.hpp"
 #include "huge_pages.hpp"
 #include "radix_sort.hpp"
 
@@ -188,7 +189,7 @@ void AlphaComplex::rank_critical() {
   std::vector<ExactSize> exact;
   std::vector<std::size_t> by_value;
   std::vector<Critical> run;
-  auto exact_size = [&](std::size_t k) { return sizes.exact_fraction(local(simplex(order[k].id))); };
+  auto exact_size = [&](std::size_t k) { return exact_fraction(sizes, local(simplex(order[k].id))); };
   auto count = [&](int c) {
     ++(c != 0 ? run_compares.exact : run_compares.perturbed);
     return c;

@@ -9,6 +9,7 @@
 
 #include "alpha/error.hpp"
 #include "dyadic.hpp"
+#include "exact_size.hpp"
 
 namespace alpha {
 namespace {
@@ -409,10 +410,12 @@ Vec3 SizeKernel::center(const Simplex& simplex) const {
   return {p0.x + x[0] / den, p0.y + x[1] / den, p0.z + x[2] / den};
 }
 
-ExactSize SizeKernel::exact_fraction(const Simplex& simplex) const {
+ExactSize exact_fraction(const SizeKernel& kernel, const Simplex& simplex) {
   const Simplex s = sorted(simplex);
   Scaled in;
-  for (int i = 0; i < s.n; ++i) in.add(pts_[s.v[i]], w_ ? w_[s.v[i]] : 0.0);
+  const Vec3* points = kernel.points();
+  const double* weights = kernel.weights();
+  for (int i = 0; i < s.n; ++i) in.add(points[s.v[i]], weights ? weights[s.v[i]] : 0.0);
   in.finish();
   ExactSize out;
   out.unit = in.unit;  // sizes are squared lengths: of 4^unit
@@ -427,8 +430,8 @@ ExactSize SizeKernel::exact_fraction(const Simplex& simplex) const {
   return out;
 }
 
-mpq_class SizeKernel::exact_size(const Simplex& simplex) const {
-  const ExactSize f = exact_fraction(simplex);
+mpq_class exact_size(const SizeKernel& kernel, const Simplex& simplex) {
+  const ExactSize f = exact_fraction(kernel, simplex);
   mpq_class q(f.num, f.den);
   q.canonicalize();
   if (f.unit >= 0)
@@ -452,7 +455,7 @@ double SizeKernel::rounded_size(const Simplex& s) const {
   if (f.error == 0) return f.value;
   // From the unreduced fraction by one integer division (no gcd): the
   // quotient's 54-56 leading bits and a sticky remainder round correctly.
-  const ExactSize x = exact_fraction(s);
+  const ExactSize x = exact_fraction(*this, s);
   const int sign = sgn(x.num) * sgn(x.den);
   if (sign == 0) return 0.0;
   mpz_class a = abs(x.num), b = abs(x.den), q, r;
@@ -468,7 +471,7 @@ double SizeKernel::rounded_size(const Simplex& s) const {
   if (rest > half || (rest == half && (r != 0 || (m & 1)))) ++m;
   const long exponent = 2L * x.unit - k + extra;
   // Below the normal range ldexp would round a second time.
-  if (exponent + 53 < -1021) return nearest_double(exact_size(s));
+  if (exponent + 53 < -1021) return nearest_double(exact_size(*this, s));
   return sign * std::ldexp(double(m), int(std::clamp(exponent, -2000L, 2000L)));
 }
 

@@ -1,5 +1,7 @@
 #include "molecule/analysis.hpp"
 
+#include "molecule/pocket_outputs.hpp"
+#include "molecule/pocket_report.hpp"
 #include "molecule/radius_file.hpp"
 #include "molecule/tunnel_start.hpp"
 
@@ -65,7 +67,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     for (const Atom& atom : a.structure.atoms) radii.push_back(atom.radius);
     a.paths = find_tunnel_paths(*a.search.complex, radii, starts, options.tunnels);
     a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    a.report = pocket_report(a.run());
+    a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
   } catch (const AnalysisError&) {
     throw;
   } catch (const StructureError& e) {
@@ -94,10 +96,18 @@ Analysis analyse_structure(const std::string& name, Structure structure, const A
   return analysed(name, options, [&] { return std::move(structure); });
 }
 
-std::string report_text(const Analysis& analysis) { return report_file_text(analysis.report); }
+std::string report_text(const Analysis& analysis) { return report_file_text(analysis.report->json); }
 
 std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out) {
-  return out.write(analysis.run(), analysis.report);
+  return out.write(analysis.run(), analysis.report->json);
+}
+
+std::vector<std::string> write_outputs(const Analysis& analysis, const std::string& dir,
+                                       std::vector<std::string>* warnings) {
+  PocketOutputDir out(dir, analysis.options.outputs);
+  std::vector<std::string> written = write_outputs(analysis, out);
+  if (warnings) *warnings = out.warnings();
+  return written;
 }
 
 }  // namespace molecule

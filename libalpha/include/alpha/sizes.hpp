@@ -13,9 +13,8 @@
 //
 // A SizeKernel is cheap to create and owns its counters; it is not shared
 // between threads (one per thread); its non-counting queries are const.
+// The exact sizes themselves (GMP fractions) are internal: src/exact_size.hpp.
 #pragma once
-#include <gmpxx.h>
-
 #include <array>
 #include <span>
 
@@ -47,15 +46,6 @@ struct Size {
   double error = 0;
 };
 
-// An exact size as an unreduced fraction: num / den * 4^unit, den != 0.
-// Cheaper than exact_size (no gcd) when sizes are only compared.
-struct ExactSize {
-  mpz_class num, den;
-  int unit = 0;
-};
-// Exact sign of a - b.
-int compare_exact(const ExactSize& a, const ExactSize& b);
-
 // Order of two sizes (or a size and an exact double) when their intervals
 // decide it: -1, +1, or 0 for a certain tie (both exact and equal);
 // kUndecided otherwise. Pure floating point, no counters.
@@ -75,9 +65,7 @@ public:
 
   // The filtered size: allocation-free, tens of nanoseconds.
   Size size(const Simplex& s) const;
-  // The exact size, and the double nearest to it (ties to even).
-  mpq_class exact_size(const Simplex& s) const;
-  ExactSize exact_fraction(const Simplex& s) const;
+  // The double nearest to the exact size (ties to even).
   double rounded_size(const Simplex& s) const;
   // Center of the smallest orthogonal sphere, in floating point (not exact).
   Vec3 center(const Simplex& s) const;
@@ -98,6 +86,8 @@ public:
   bool attached_any(const Simplex& s, std::span<const Index> qs);
 
   const SizeStats& stats() const { return stats_; }
+  const Vec3* points() const { return pts_; }
+  const double* weights() const { return w_; }  // null: unweighted
 
 private:
   const Vec3* pts_;

@@ -9,22 +9,24 @@
 // (anything else: a bug, a full disk).
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "alpha/error.hpp"
 #include "alphapocket/version.hpp"
 #include "molecule/cavities.hpp"
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
+#include "molecule/output_selection.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "molecule/tunnel_paths.hpp"
 
 namespace molecule {
+
+struct PocketRun;       // pocket_report.hpp
+struct Report;          // pocket_report.hpp: report.json as JSON
+class PocketOutputDir;  // pocket_outputs.hpp
 
 using FailureKind = alpha::ErrorKind;
 
@@ -66,9 +68,10 @@ struct Analysis {
   std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnel_paths)
   double tunnels_seconds = 0;
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
-  nlohmann::ordered_json report;  // pocket_report(run())
+  std::shared_ptr<const Report> report;  // pocket_report(run()); report_text() is its file
 
-  // The writers' view of it (borrows from *this: keep *this alive and in place).
+  // The writers' view of it (pocket_report.hpp; borrows from *this: keep
+  // *this alive and in place).
   PocketRun run() const;
 };
 
@@ -86,5 +89,9 @@ std::string report_text(const Analysis& analysis);
 // Writes the selected outputs (options.outputs) into `out`. Returns the
 // names written; warnings in out.warnings().
 std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out);
+// The same into directory `dir` (created if missing; molecule::PocketOutputDir);
+// its warnings into *warnings when given.
+std::vector<std::string> write_outputs(const Analysis& analysis, const std::string& dir,
+                                       std::vector<std::string>* warnings = nullptr);
 
 }  // namespace molecule

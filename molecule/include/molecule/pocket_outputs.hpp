@@ -30,20 +30,11 @@
 #include <string>
 #include <vector>
 
+#include "molecule/output_selection.hpp"
 #include "molecule/pocket_report.hpp"
 #include "molecule/temporary_paths.hpp"
 
 namespace molecule {
-
-struct OutputSelection {
-  bool report = true, csv = true, pdb = true, meshes = true;
-  bool pml = true;  // the viewer scripts: pockets.pml, pockets.cxc and structure.cif
-  bool tunnels = true;  // tunnels.csv, tunnel_profiles.csv, tunnels.pdb
-};
-
-// "report,csv,pml,pdb,meshes,tunnels" (any subset, any order) -> a selection;
-// throws alpha::Error naming an unknown item.
-OutputSelection parse_output_selection(const std::string& list);
 
 class PocketOutputDir {
 public:

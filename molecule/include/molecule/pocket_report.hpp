@@ -65,6 +65,10 @@ std::string molecule_mesh_path(const std::string& format);
 std::string csv_field(const std::string& s);
 
 nlohmann::ordered_json pocket_report(const PocketRun& run);
+// The report as Analysis holds it (analysis.hpp keeps JSON out of its header).
+struct Report {
+  nlohmann::ordered_json json;
+};
 // report.json's text: indented by 2, invalid UTF-8 in names replaced (U+FFFD).
 std::string report_file_text(const nlohmann::ordered_json& report);
 std::string pockets_csv(const PocketRun& run);

@@ -1,0 +1,24 @@
+// Exact sizes of simplices as GMP fractions: internal to libalpha (the
+// public alpha/sizes.hpp carries no GMP), used by the spectrum sort and the
+// tests.
+#pragma once
+#include <gmpxx.h>
+
+#include "alpha/sizes.hpp"
+
+namespace alpha {
+
+// An exact size as an unreduced fraction: num / den * 4^unit, den != 0.
+// Cheaper than exact_size (no gcd) when sizes are only compared.
+struct ExactSize {
+  mpz_class num, den;
+  int unit = 0;
+};
+// Exact sign of a - b.
+int compare_exact(const ExactSize& a, const ExactSize& b);
+
+ExactSize exact_fraction(const SizeKernel& kernel, const Simplex& s);
+// The exact size, reduced.
+mpq_class exact_size(const SizeKernel& kernel, const Simplex& s);
+
+}  // namespace alpha

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The installed package: `cmake --install` into a temporary prefix, no GMP,
+# nlohmann, OpenMesh or gemmi in the installed headers, then README's "Use
+# from C++" example built there with find_package(alphapocket) and run, and
+# the pkg-config file's version and flags.
+# Usage: find_package.sh BUILD_DIR REPO_ROOT
+set -euo pipefail
+build=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cmake --install "$build" --prefix "$tmp/prefix" --component Unspecified >/dev/null
+[[ -f $tmp/prefix/lib/cmake/alphapocket/alphapocketConfig.cmake ]] || fail "no alphapocketConfig.cmake"
+[[ -f $tmp/prefix/lib/cmake/alphapocket/alphapocketConfigVersion.cmake ]] || fail "no version file"
+[[ -x $tmp/prefix/bin/alphapocket ]] || fail "no alphapocket binary"
+if grep -rlE '#include *[<"](gmp|gmpxx|nlohmann/|OpenMesh/|gemmi/)' "$tmp/prefix/include"; then
+  fail "installed headers include GMP, nlohmann, OpenMesh or gemmi"
+fi
+# Every installed header compiles on its own (none needs an uninstalled one).
+for h in $(cd "$tmp/prefix/include" && find . -name '*.hpp' | sort); do
+  echo "#include \"${h#./}\"" >>"$tmp/all.cpp"
+done
+g++ -std=c++20 -fsyntax-only -I"$tmp/prefix/include" "$tmp/all.cpp" || fail "installed headers do not compile alone"
+
+# README's example: its CMakeLists.txt and sites.cpp, built against the prefix.
+mkdir "$tmp/sites"
+awk '/^## Use from C\+\+/{s=1} /^## /&&!/C\+\+/{s=0} s' "$root/README.md" >"$tmp/section.md"
+awk '/^```cmake/{f=1;next} /^```/{f=0} f' "$tmp/section.md" >"$tmp/sites/CMakeLists.txt"
+awk '/^```cpp/{f=1;next} /^```/{f=0} f' "$tmp/section.md" >"$tmp/sites/sites.cpp"
+[[ -s $tmp/sites/CMakeLists.txt && -s $tmp/sites/sites.cpp ]] || fail "no cmake or cpp block in README's Use from C++"
+cmake -S "$tmp/sites" -B "$tmp/sites/build" -G Ninja -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake --build "$tmp/sites/build" >/dev/null
+"$tmp/sites/build/sites" "$root/examples/data/1a26A.pdb" "$tmp/out" >"$tmp/stdout"
+grep -q '^pocket 1: score ' "$tmp/stdout" || fail "no 'pocket 1' line: $(cat "$tmp/stdout")"
+grep -q '^SA area .* A^2, MS volume .* A^3$' "$tmp/stdout" || fail "no surface line"
+"$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none -o "$tmp/cli" -q
+cmp "$tmp/out/report.json" "$tmp/cli/report.json" || fail "report.json differs from the CLI's"
+set +e
+"$tmp/sites/build/sites" "$root/tests/data/bad/three_atoms.pdb" 2>"$tmp/err"
+rc=$?
+set -e
+[[ $rc -eq 1 ]] || fail "bad input: exit $rc, expected 1"
+grep -q "three_atoms.pdb: .*(bad_input)" "$tmp/err" || fail "bad input message: $(cat "$tmp/err")"
+
+# pkg-config: version and a program linked with its flags.
+export PKG_CONFIG_PATH=$tmp/prefix/lib/pkgconfig
+version=$(pkg-config --modversion alphapocket)
+grep -q "^project(alphapocket VERSION $version" "$root/CMakeLists.txt" || fail "pkg-config version $version"
+printf '#include "alphapocket/version.hpp"\n#include "alpha/triangulation.hpp"\n#include <cstdio>\nint main() {\n  alpha::Triangulation t({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});\n  std::printf("%%s %%zu\\n", alphapocket::kVersion, t.num_finite_cells());\n}\n' >"$tmp/pc.cpp"
+# shellcheck disable=SC2046
+g++ "$tmp/pc.cpp" -o "$tmp/pc" $(pkg-config --cflags --libs --static alphapocket)
+[[ $("$tmp/pc") == "$version 1" ]] || fail "pkg-config program printed '$("$tmp/pc")'"
+echo PASS
