@@ -1,0 +1,195 @@
+"""alphapocket: cavities in molecules from exact 3D alpha shapes.
+
+analyze(structure) finds the pockets, voids and tunnels of a structure as
+`alphapocket pockets` does; surface(structure) measures its solvent-accessible
+and molecular surfaces as `alphapocket surface` does; AlphaComplex(points)
+gives the alpha complex of any (weighted) point cloud. A structure is a file
+path, a gemmi.Structure (python3-gemmi; read through plain attributes, so no
+binary coupling to gemmi), or arrays given as keywords (coordinates=N x 3,
+radii=N, optional atom_names, residue_names, elements, chains,
+residue_numbers). Long calls release the GIL: threads run in parallel.
+
+Errors raise alphapocket.BadInputError (the input cannot be used),
+LimitExceededError (too large) or MisuseError (a wrong call), all subclasses
+of alphapocket.Error, with the messages the command line prints.
+"""
+
+import json
+import os
+
+import numpy as np
+
+from ._core import (AlphaComplex, BadInputError, Error, LimitExceededError, MisuseError, __version__)
+from . import _core
+
+__all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", "BadInputError",
+           "LimitExceededError", "MisuseError", "__version__"]
+
+# The defaults of `alphapocket pockets`.
+_ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=4.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
+                         keep_hetero=False, min_plddt=0.0, radii="", tunnels_from="auto", tunnel_probe=0.9,
+                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels")
+_ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
+
+
+class Record:
+    """One item of the report (a site, pocket, void, tunnel...): its keys as
+    attributes; numeric lists (centres, profiles) as numpy arrays; residues
+    as tuples (chain, name, number, insertion_code)."""
+
+    def __init__(self, data):
+        for key, value in data.items():
+            setattr(self, key, _converted(key, value))
+
+    def __repr__(self):
+        return "Record(" + ", ".join(f"{k}={v!r}" for k, v in vars(self).items() if np.isscalar(v)) + ")"
+
+
+def _numeric(values):
+    return all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in values)
+
+
+def _converted(key, value):
+    if isinstance(value, dict):
+        return Record(value)
+    if not isinstance(value, list) or not value:
+        return value
+    if key.endswith("residues") and all(isinstance(r, dict) for r in value):
+        return tuple((r["chain"], r["name"], r["number"], r["insertion_code"]) for r in value)
+    if all(isinstance(v, dict) for v in value):
+        return [Record(v) for v in value]
+    if _numeric(value):
+        return np.asarray(value, dtype=float)
+    if all(isinstance(v, list) and _numeric(v) and len(v) == len(value[0]) for v in value):
+        return np.asarray(value, dtype=float)  # rows of points (x, y, z) or profiles (x, y, z, r)
+    return value
+
+
+class Analysis:
+    """What analyze() found: .sites (each with .cavity, its pocket or void),
+    .pockets, .voids, .tunnels (Records, as report.json holds them),
+    .report (report.json as a dict), .to_json() (report.json's text) and
+    .write(outdir) (the files of `alphapocket pockets`)."""
+
+    def __init__(self, core):
+        self._core = core
+        self._text = core.report_json()
+        self.report = json.loads(self._text)
+        for key in ("sites", "pockets", "voids", "tunnels"):
+            setattr(self, key, [Record(r) for r in self.report.get(key, [])])
+        for site in self.sites:  # its pocket or void, with the lining residues and MS volume
+            site.cavity = (self.pockets if site.kind == "pocket" else self.voids)[site.cavity_rank - 1]
+
+    def to_json(self):
+        """report.json's text, byte for byte."""
+        return self._text
+
+    def write(self, outdir):
+        """Writes report.json, pockets.csv, the viewer scripts... into outdir
+        as `alphapocket pockets -o outdir` does; returns the names written."""
+        return self._core.write(os.fspath(outdir))
+
+
+def _is_gemmi(structure):
+    return type(structure).__module__.split(".")[0] == "gemmi"
+
+
+def _gemmi_arrays(structure, model, chains, keep_hydrogens, keep_waters, keep_hetero):
+    """Atoms of a gemmi.Structure as arrays (no altlocs but the first)."""
+    models = list(structure)
+    chosen = models[0] if not model else next((m for m in models if str(m.name) == str(model)), None)
+    if chosen is None:
+        raise BadInputError(f"{structure.name}: no model {model}")
+    columns = {k: [] for k in ("coordinates",) + _ARRAY_KEYS}
+    for chain in chosen:
+        if chains and chain.name not in chains:
+            continue
+        for residue in chain:
+            water = residue.is_water()
+            hetero = residue.het_flag == "H" and not water
+            if (water and not keep_waters) or (hetero and not keep_hetero):
+                continue
+            for atom in residue:
+                if atom.altloc not in ("\0", "A"):
+                    continue
+                if atom.element.name in ("H", "D") and not keep_hydrogens:
+                    continue
+                columns["coordinates"].append((atom.pos.x, atom.pos.y, atom.pos.z))
+                columns["atom_names"].append(atom.name)
+                columns["residue_names"].append(residue.name)
+                columns["elements"].append(atom.element.name)
+                columns["chains"].append(chain.name)
+                columns["residue_numbers"].append(residue.seqid.num)
+    return columns
+
+
+def _input(structure, kwargs, selection):
+    """(path, None) or (name, arrays) for the core."""
+    if isinstance(structure, (str, os.PathLike)):
+        return os.fspath(structure), None
+    if _is_gemmi(structure):
+        arrays = _gemmi_arrays(structure, selection.get("model", 0), selection.get("chains", []),
+                               selection.get("keep_hydrogens", False), selection.get("keep_waters", False),
+                               selection.get("keep_hetero", False))
+        return structure.name or "gemmi structure", arrays
+    if structure is None and "coordinates" in kwargs:
+        arrays = {k: kwargs.pop(k) for k in ("coordinates", "radii") + _ARRAY_KEYS if k in kwargs}
+        return kwargs.pop("name", "arrays"), arrays
+    raise MisuseError("analyze/surface: give a file path, a gemmi.Structure or coordinates=... (and radii=...)")
+
+
+def _core_arrays(arrays):
+    xyz = np.ascontiguousarray(arrays["coordinates"], dtype=float)
+    radii = arrays.get("radii")
+    radii = None if radii is None else np.ascontiguousarray(radii, dtype=float)
+    names = {k: (None if arrays.get(k) is None else list(arrays[k])) for k in _ARRAY_KEYS}
+    return xyz, radii, names
+
+
+def analyze(structure=None, **options):
+    """Pockets, voids, sites and tunnels of a structure (see the module doc);
+    options as `alphapocket pockets` names them: probe=1.4, min_volume=4,
+    model, chains=[...], keep_hydrogens, keep_waters, keep_hetero, min_plddt,
+    radii (a radius file), tunnels_from="auto", tunnel_probe=0.9, pores,
+    mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels" (what write() writes; a subset)."""
+    source, arrays = _input(structure, options, options)
+    unknown = set(options) - set(_ANALYZE_DEFAULTS)
+    if unknown:
+        raise MisuseError("analyze: unknown option(s) " + ", ".join(sorted(unknown)))
+    opts = dict(_ANALYZE_DEFAULTS, **options)
+    opts["chains"] = list(opts["chains"])
+    opts["radii"] = os.fspath(opts["radii"])
+    if isinstance(opts["tunnels_from"], int):
+        opts["tunnels_from"] = str(opts["tunnels_from"])
+    if arrays is None:
+        return Analysis(_core.analyse_path(source, opts))
+    return Analysis(_core.analyse_arrays(source, *_core_arrays(arrays), opts))
+
+
+class SurfaceResult:
+    """sa_area, sa_volume (A^2, A^3), ms_area, ms_volume (None with
+    excluded=False), atom_areas (numpy: SA area per atom), atoms."""
+
+    def __init__(self, d):
+        self.__dict__.update(d)
+
+    def __repr__(self):
+        return (f"SurfaceResult(atoms={self.atoms}, sa_area={self.sa_area:.3f}, sa_volume={self.sa_volume:.3f}, "
+                f"ms_area={self.ms_area}, ms_volume={self.ms_volume})")
+
+
+def surface(structure=None, probe=1.4, excluded=True, **selection):
+    """Solvent-accessible (SA) and solvent-excluded (MS) area and volume, as
+    `alphapocket surface --json`; excluded=False skips the MS surface
+    (--sa-only). Selection: model, chains, keep_hydrogens, keep_waters,
+    keep_hetero."""
+    source, arrays = _input(structure, selection, selection)
+    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False)
+    unknown = set(selection) - set(sel)
+    if unknown:
+        raise MisuseError("surface: unknown option(s) " + ", ".join(sorted(unknown)))
+    sel.update(selection)
+    sel["chains"] = list(sel["chains"])
+    if arrays is None:
+        return SurfaceResult(_core.surface_path(source, float(probe), bool(excluded), sel))
+    return SurfaceResult(_core.surface_arrays(*_core_arrays(arrays), float(probe), bool(excluded)))

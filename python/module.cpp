@@ -1,0 +1,292 @@
+// The compiled half of the Python package `alphapocket` (alphapocket/_core):
+// thin bindings of molecule::analyse, molecule::measure_surface and
+// alpha::AlphaComplex. The Python half (alphapocket/__init__.py) turns the
+// report into objects and adapts gemmi structures. Every long call releases
+// the GIL; alpha::Error becomes the exception of its kind (BadInputError,
+// LimitExceededError, MisuseError, all alphapocket.Error) with the CLI's
+// message.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
+#include "alpha/triangulation.hpp"
+#include "alphapocket/version.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/output_selection.hpp"
+#include "molecule/radii.hpp"
+#include "molecule/surface.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<alpha::Vec3> points_of(const Points& a) {
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw alpha::Error("points: expected an array of shape (N, 3)", alpha::ErrorKind::Misuse);
+  std::vector<alpha::Vec3> p(a.shape(0));
+  const auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) p[i] = {r(i, 0), r(i, 1), r(i, 2)};
+  return p;
+}
+
+std::vector<double> values_of(const Points& a, std::size_t n, const char* what) {
+  if (a.ndim() != 1 || std::size_t(a.shape(0)) != n)
+    throw alpha::Error(std::string(what) + ": expected " + std::to_string(n) + " values, one per point",
+                       alpha::ErrorKind::Misuse);
+  return {a.data(), a.data() + n};
+}
+
+py::array_t<double> array_of(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
+
+// The options of `alphapocket pockets`, by the CLI's names.
+molecule::AnalysisOptions analysis_options(const py::dict& o) {
+  molecule::AnalysisOptions a;
+  a.cavities.probe = o["probe"].cast<double>();
+  a.cavities.min_volume = o["min_volume"].cast<double>();
+  a.structure.model = o["model"].cast<int>();
+  a.structure.chains = o["chains"].cast<std::vector<std::string>>();
+  a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();
+  a.structure.keep_waters = o["keep_waters"].cast<bool>();
+  a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
+  a.structure.min_plddt = o["min_plddt"].cast<double>();
+  a.radii_file = o["radii"].cast<std::string>();
+  a.tunnels_from = o["tunnels_from"].cast<std::string>();
+  a.tunnels.probe = o["tunnel_probe"].cast<double>();
+  a.tunnels.pores = o["pores"].cast<bool>();
+  a.mesh_format = o["mesh"].cast<std::string>();
+  a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
+  return a;
+}
+
+using Analysis = std::shared_ptr<const molecule::Analysis>;
+
+Analysis analyse_path(const std::string& path, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse(path, o));
+}
+
+// Atoms from arrays: radii given, or ProtOr radii from residue, atom names
+// and elements.
+molecule::Structure structure_of(const Points& xyz, const std::optional<Points>& radii, const py::dict& names) {
+  const std::vector<alpha::Vec3> p = points_of(xyz);
+  const auto column = [&](const char* key, const std::string& fallback) {
+    std::vector<std::string> c(p.size(), fallback);
+    if (names.contains(key) && !names[key].is_none()) c = names[key].cast<std::vector<std::string>>();
+    if (c.size() != p.size())
+      throw alpha::Error(std::string(key) + ": expected " + std::to_string(p.size()) + " values, one per atom",
+                         alpha::ErrorKind::Misuse);
+    return c;
+  };
+  const auto atom_names = column("atom_names", "X"), residue_names = column("residue_names", "UNK"),
+             elements = column("elements", "X"), chains = column("chains", "A");
+  std::vector<int> seq(p.size(), 1);
+  if (names.contains("residue_numbers") && !names["residue_numbers"].is_none())
+    seq = names["residue_numbers"].cast<std::vector<int>>();
+  if (seq.size() != p.size()) throw alpha::Error("residue_numbers: expected one per atom", alpha::ErrorKind::Misuse);
+  const std::vector<double> r = radii ? values_of(*radii, p.size(), "radii") : std::vector<double>();
+  molecule::Structure s;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    molecule::Atom a;
+    a.serial = int(i + 1);
+    a.name = atom_names[i];
+    a.residue_name = residue_names[i];
+    a.element = elements[i];
+    a.chain = chains[i];
+    a.seq_num = seq[i];
+    a.position = p[i];
+    a.radius = radii ? r[i] : molecule::radius(a.residue_name, a.name, a.element);
+    s.atoms.push_back(std::move(a));
+  }
+  s.report.format = "arrays";
+  s.report.models = 1;
+  s.report.model = 1;
+  s.report.atoms_in_model = s.report.kept = s.atoms.size();
+  return s;
+}
+
+Analysis analyse_arrays(const std::string& name, const Points& xyz, const std::optional<Points>& radii,
+                        const py::dict& names, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  molecule::Structure s = structure_of(xyz, radii, names);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse_structure(name, std::move(s), o));
+}
+
+py::dict surface_dict(const molecule::Surface& s) {
+  py::dict d;
+  d["atoms"] = s.balls;
+  d["sa_area"] = s.sa_area;
+  d["sa_volume"] = s.sa_volume;
+  d["ms_area"] = s.ms_area ? py::cast(*s.ms_area) : py::none();
+  d["ms_volume"] = s.ms_volume ? py::cast(*s.ms_volume) : py::none();
+  d["atom_areas"] = array_of(s.ball_areas);
+  return d;
+}
+
+// The triangulation and its complex, owned together (the complex refers to
+// the triangulation).
+class PyAlphaComplex {
+public:
+  PyAlphaComplex(const Points& points, const std::optional<Points>& weights) {
+    std::vector<alpha::Vec3> p = points_of(points);
+    std::vector<double> w = weights ? values_of(*weights, p.size(), "weights") : std::vector<double>();
+    py::gil_scoped_release release;
+    t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w));
+    ac_ = std::make_unique<alpha::AlphaComplex>(*t_);
+  }
+
+  py::array_t<double> spectrum() const {
+    std::vector<double> v(ac_->spectrum_size());
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = ac_->spectrum_value(alpha::Index(i));
+    return array_of(v);
+  }
+
+  // Counts per dimension (rows: vertices, edges, triangles, tetrahedra) and
+  // class (columns: exterior, singular, regular, interior).
+  py::array_t<std::int64_t> classify(double alpha_sq) const {
+    const alpha::ClassCounts c = ac_->counts(ac_->level(alpha_sq));
+    py::array_t<std::int64_t> out({4, 4});
+    auto m = out.mutable_unchecked<2>();
+    for (int d = 0; d < 4; ++d)
+      for (int k = 0; k < 4; ++k) m(d, k) = std::int64_t(c[d][k]);
+    return out;
+  }
+
+  std::array<std::size_t, 3> betti(double alpha_sq) const {
+    const alpha::Index level = ac_->level(alpha_sq);
+    py::gil_scoped_release release;
+    return ac_->betti(level);
+  }
+
+  // Rows (dim, birth alpha_sq, death alpha_sq), death inf for classes that
+  // never die.
+  py::array_t<double> persistence() const {
+    std::vector<alpha::PersistencePair> pairs;
+    {
+      py::gil_scoped_release release;
+      pairs = ac_->persistence();
+    }
+    py::array_t<double> out({py::ssize_t(pairs.size()), py::ssize_t(3)});
+    auto m = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      m(i, 0) = pairs[i].dim;
+      m(i, 1) = ac_->spectrum_value(pairs[i].birth);
+      m(i, 2) = pairs[i].death == alpha::kNever ? INFINITY : ac_->spectrum_value(pairs[i].death);
+    }
+    return out;
+  }
+
+  // The shape's boundary at alpha_sq: (vertices (V, 3), faces (F, 3) outward).
+  py::tuple shape_mesh(double alpha_sq) const {
+    const alpha::ShapeBoundary b = ac_->boundary(ac_->level(alpha_sq));
+    const auto points = t_->points();
+    py::array_t<double> v({py::ssize_t(points.size()), py::ssize_t(3)});
+    auto mv = v.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < points.size(); ++i) mv(i, 0) = points[i].x, mv(i, 1) = points[i].y, mv(i, 2) = points[i].z;
+    py::array_t<std::int64_t> f({py::ssize_t(b.triangles.size()), py::ssize_t(3)});
+    auto mf = f.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < b.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) mf(i, k) = b.triangles[i][k];
+    return py::make_tuple(v, f);
+  }
+
+  std::size_t num_points() const { return t_->num_points(); }
+
+private:
+  std::unique_ptr<alpha::Triangulation> t_;
+  std::unique_ptr<alpha::AlphaComplex> ac_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "alphapocket's compiled core; use the package alphapocket";
+  m.attr("__version__") = alphapocket::kVersion;
+
+  // Exceptions, one per alpha::ErrorKind, under alphapocket.Error.
+  static py::exception<alpha::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<alpha::Error> bad_input(m, "BadInputError", error.ptr());
+  static py::exception<alpha::Error> limit(m, "LimitExceededError", error.ptr());
+  static py::exception<alpha::Error> misuse(m, "MisuseError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const alpha::Error& e) {
+      switch (e.kind()) {
+        case alpha::ErrorKind::BadInput: bad_input(e.what()); return;
+        case alpha::ErrorKind::LimitExceeded: limit(e.what()); return;
+        case alpha::ErrorKind::Misuse: misuse(e.what()); return;
+        case alpha::ErrorKind::Internal: break;
+      }
+      error(e.what());
+    } catch (const std::bad_alloc&) {
+      limit("out of memory");
+    }
+  });
+
+  py::class_<molecule::Analysis, std::shared_ptr<molecule::Analysis>>(m, "Analysis")
+      .def("report_json", [](const molecule::Analysis& a) { return molecule::report_text(a); })
+      .def("write",
+           [](const molecule::Analysis& a, const std::string& outdir) {
+             py::gil_scoped_release release;
+             return molecule::write_outputs(a, outdir);
+           })
+      .def_property_readonly("file", [](const molecule::Analysis& a) { return a.file; });
+
+  m.def("analyse_path", [](const std::string& path, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));
+  });
+  m.def("analyse_arrays", [](const std::string& name, const Points& xyz, const std::optional<Points>& radii,
+                             const py::dict& names, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_arrays(name, xyz, radii, names, options));
+  });
+
+  m.def("surface_path", [](const std::string& path, double probe, bool excluded, const py::dict& selection) {
+    molecule::StructureOptions so;
+    so.model = selection["model"].cast<int>();
+    so.chains = selection["chains"].cast<std::vector<std::string>>();
+    so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
+    so.keep_waters = selection["keep_waters"].cast<bool>();
+    so.keep_hetero = selection["keep_hetero"].cast<bool>();
+    so.min_atoms = 1;
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::surface_of_file(path, so, {probe, excluded});
+    }
+    return surface_dict(s);
+  });
+  m.def("surface_arrays", [](const Points& xyz, const std::optional<Points>& radii, const py::dict& names,
+                             double probe, bool excluded) {
+    const molecule::Structure st = structure_of(xyz, radii, names);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::measure_surface(st.atoms, {probe, excluded});
+    }
+    return surface_dict(s);
+  });
+
+  py::class_<PyAlphaComplex>(m, "AlphaComplex")
+      .def(py::init<const Points&, const std::optional<Points>&>(), py::arg("points"), py::arg("weights") = py::none())
+      .def_property_readonly("spectrum", &PyAlphaComplex::spectrum)
+      .def("classify", &PyAlphaComplex::classify, py::arg("alpha_sq"))
+      .def("betti", &PyAlphaComplex::betti, py::arg("alpha_sq"))
+      .def("persistence", &PyAlphaComplex::persistence)
+      .def("shape_mesh", &PyAlphaComplex::shape_mesh, py::arg("alpha_sq"))
+      .def("__len__", &PyAlphaComplex::num_points);
+}

@@ -1,0 +1,78 @@
+# analyze(): the report and files of `alphapocket pockets`, from a path,
+# from arrays and from a gemmi structure.
+import filecmp
+import json
+
+import numpy as np
+import pytest
+
+import alphapocket
+from conftest import PDB, SMALL, cli
+
+
+def test_to_json_equals_report_json(pdb_analysis, tmp_path):
+    cli("pockets", PDB, "-o", tmp_path / "cli", "-q")
+    assert pdb_analysis.to_json() == (tmp_path / "cli" / "report.json").read_text()
+
+
+def test_write_equals_cli_files(pdb_analysis, tmp_path):
+    cli("pockets", PDB, "-o", tmp_path / "cli", "-q")
+    written = pdb_analysis.write(tmp_path / "py")
+    assert "report.json" in written and "pockets.csv" in written
+    cmp = filecmp.dircmp(tmp_path / "cli", tmp_path / "py")
+    assert not cmp.left_only and not cmp.right_only
+    assert not filecmp.cmpfiles(tmp_path / "cli", tmp_path / "py", cmp.common_files, shallow=False)[1]
+    meshes = sorted(p.name for p in (tmp_path / "cli" / "meshes").iterdir())
+    assert meshes and meshes == sorted(p.name for p in (tmp_path / "py" / "meshes").iterdir())
+    for name in meshes:
+        assert (tmp_path / "cli" / "meshes" / name).read_bytes() == (tmp_path / "py" / "meshes" / name).read_bytes()
+
+
+def test_records_follow_the_report(pdb_analysis):
+    report = json.loads(pdb_analysis.to_json())
+    a = pdb_analysis
+    for key in ("sites", "pockets", "voids", "tunnels"):
+        assert len(getattr(a, key)) == len(report[key])
+    assert len(a.sites) > 0 and len(a.pockets) > 0
+    site, first = a.sites[0], report["sites"][0]
+    assert site.score == first["score"]
+    assert isinstance(site.center, np.ndarray) and site.center.shape == (3,)
+    assert np.array_equal(site.center, np.asarray(first["center"]))
+    pocket = report["pockets"][first["cavity_rank"] - 1]
+    assert site.cavity.ms_volume == pocket["ms_volume"]
+    assert site.cavity.lining_residues[0] == tuple(pocket["lining_residues"][0][k]
+                                                   for k in ("chain", "name", "number", "insertion_code"))
+    assert len(site.cavity.lining_residues) == len(pocket["lining_residues"])
+    assert a.tunnels[0].bottleneck_center.shape == (3,)
+    assert a.report["molecule"]["atoms"] == 2769
+
+
+def test_arrays_with_protor_radii_equal_the_file(tmp_path):
+    """The file's atoms given as arrays (names, elements: ProtOr radii) give
+    the file's sites."""
+    gemmi = pytest.importorskip("gemmi")
+    st = gemmi.read_structure(str(SMALL))
+    from_file = alphapocket.analyze(SMALL, tunnels_from="none")
+    from_gemmi = alphapocket.analyze(st, tunnels_from="none")
+    assert from_gemmi.report["molecule"]["atoms"] == from_file.report["molecule"]["atoms"]
+    assert from_gemmi.report["molecule"]["sa_volume"] == from_file.report["molecule"]["sa_volume"]
+    assert [s.score for s in from_gemmi.sites] == [s.score for s in from_file.sites]
+
+
+def test_arrays_with_radii():
+    """Balls on a hollow shell: one void inside, whatever the names."""
+    rng = np.random.default_rng(1)
+    d = rng.normal(size=(600, 3))
+    xyz = 9.0 * d / np.linalg.norm(d, axis=1)[:, None]
+    a = alphapocket.analyze(coordinates=xyz, radii=np.full(600, 1.8), tunnels_from="none")
+    assert a.report["input"]["file"] == "arrays"
+    assert len(a.voids) == 1
+    # The void's centre lies near the shell's centre.
+    assert np.linalg.norm(a.voids[0].center) < 2.0
+
+
+def test_options_reach_the_search():
+    a = alphapocket.analyze(PDB, probe=1.6, min_volume=20, tunnels_from="none")
+    assert a.report["parameters"]["probe"] == 1.6
+    assert a.report["parameters"]["min_volume"] == 20
+    assert a.tunnels == [] or all(t is not None for t in a.tunnels)

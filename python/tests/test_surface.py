@@ -1,0 +1,34 @@
+# surface(): `alphapocket surface --json --per-atom`'s numbers.
+import json
+
+import numpy as np
+
+import alphapocket
+from conftest import PDB, SMALL, cli
+
+
+def test_equals_cli():
+    out = json.loads(cli("surface", SMALL, "--json", "--per-atom", "-q").stdout)
+    s = alphapocket.surface(SMALL)
+    assert s.atoms == out["atoms"]
+    for key in ("sa_area", "sa_volume", "ms_area", "ms_volume"):
+        assert getattr(s, key) == out[key]
+    assert isinstance(s.atom_areas, np.ndarray)
+    assert s.atom_areas.tolist() == [a["area"] for a in out["per_atom"]]
+    assert abs(s.atom_areas.sum() - s.sa_area) <= 1e-9 * s.sa_area
+
+
+def test_sa_only_and_probe():
+    out = json.loads(cli("surface", PDB, "--json", "--sa-only", "--probe", "0", "-q").stdout)
+    s = alphapocket.surface(PDB, probe=0, excluded=False)
+    assert s.ms_area is None and s.ms_volume is None
+    assert (s.sa_area, s.sa_volume) == (out["sa_area"], out["sa_volume"])
+
+
+def test_one_ball_closed_form():
+    s = alphapocket.surface(coordinates=[[1.0, 2.0, 3.0]], radii=[1.5], probe=0.5)
+    r = 2.0
+    assert abs(s.sa_area - 4 * np.pi * r * r) < 1e-9
+    assert abs(s.sa_volume - 4 / 3 * np.pi * r ** 3) < 1e-9
+    # The molecular surface of one ball is the ball itself.
+    assert abs(s.ms_volume - 4 / 3 * np.pi * 1.5 ** 3) < 1e-9
