@@ -29,5 +29,7 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/alphapocketConfigVersion.
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/alphapocketConfig.cmake ${PROJECT_BINARY_DIR}/alphapocketConfigVersion.cmake
         DESTINATION ${config_dir})
+# Relocatable: the prefix is found from the .pc file's own directory.
+file(RELATIVE_PATH pc_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 configure_file(cmake/alphapocket.pc.in ${PROJECT_BINARY_DIR}/alphapocket.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/alphapocket.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

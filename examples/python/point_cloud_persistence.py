@@ -27,8 +27,11 @@ def main(points):
         print(f"dimension {dim}: " + ", ".join(f"[{b:.3g}, {d:.3g})" for _, b, d in longest))
     # Where the torus is a torus: one component, two 1-cycles, one void.
     # Betti number k at a = pairs of dimension k born at or before a that
-    # die after it, for every critical value at once.
-    values = complex_.spectrum
+    # die after it, at once for every a halfway between two critical values
+    # (a critical value itself is the nearest double to an exact value, on
+    # either side of it).
+    spectrum = complex_.spectrum
+    values = (spectrum[:-1] + spectrum[1:]) / 2
     betti = np.array([np.searchsorted(np.sort(pairs[pairs[:, 0] == k, 1]), values, side="right") -
                       np.searchsorted(np.sort(pairs[pairs[:, 0] == k, 2]), values, side="right") for k in range(3)])
     torus_like = np.flatnonzero((betti.T == [1, 2, 1]).all(axis=1))

@@ -37,7 +37,7 @@ def test_torus_persistence():
     assert ((pairs[:, 0] == 0) & np.isinf(pairs[:, 2])).sum() == 1
     ones = pairs[pairs[:, 0] == 1]
     lengths = np.sort(ones[:, 2] - ones[:, 1])[::-1]
-    assert lengths[1] > 5 * lengths[2]
+    assert lengths[1] > 3 * lengths[2]
 
 
 def test_persistence_equals_cli():

@@ -35,7 +35,7 @@ cmake --build "$tmp/sites/build" >/dev/null
 "$tmp/sites/build/sites" "$root/examples/data/1a26A.pdb" "$tmp/out" >"$tmp/stdout"
 grep -q '^pocket 1: score ' "$tmp/stdout" || fail "no 'pocket 1' line: $(cat "$tmp/stdout")"
 grep -q '^SA area .* A^2, MS volume .* A^3$' "$tmp/stdout" || fail "no surface line"
-"$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none -o "$tmp/cli" -q
+"$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none -o "$tmp/cli" -q >/dev/null
 cmp "$tmp/out/report.json" "$tmp/cli/report.json" || fail "report.json differs from the CLI's"
 set +e
 "$tmp/sites/build/sites" "$root/tests/data/bad/three_atoms.pdb" 2>"$tmp/err"
