@@ -19,7 +19,8 @@ namespace {
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 an error in the input or the output (one line 'ERROR: <file>: <problem>' on "
-    "stderr); 2 a wrong command line; 5 a limit exceeded (out of memory, too many points); 6 an internal error "
+    "stderr); 2 a wrong command line; 5 a limit exceeded (a file above --max-input-mb, out of memory, too many "
+    "points); 6 an internal error "
     "(a bug). Logs go to stderr (-q: warnings and errors only; -v, -vv: more, e.g. pockets "
     "logs every site); results to stdout and the output files.";
 

@@ -185,7 +185,7 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   r.key = molecule::batch_key({{"probe", 1.4}}, "test");
   r.status = "ok";
   r.seconds = 0.25;
-  r.rows = molecule::report_rows(a.report);
+  r.rows = molecule::report_rows(a.report->json);
   const std::string line = molecule::record_line(r);
   CHECK(line.find('\n') == std::string::npos);
   const molecule::BatchRecord back = molecule::parse_record(line);
@@ -194,12 +194,12 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   CHECK(r.key != molecule::batch_key({{"probe", 1.5}}, "test"));
   CHECK(r.key != molecule::batch_key({{"probe", 1.4}}, "other"));
   CHECK(back.rows["sites"].size() == a.search.cavities.sites.size());
-  CHECK(back.rows["tunnels"].size() == a.report["tunnels"].size());  // cycles, tunnels and pores
-  CHECK(a.report["tunnels"].size() == a.search.cavities.tunnels.size() + a.paths.size());
+  CHECK(back.rows["tunnels"].size() == a.report->json["tunnels"].size());  // cycles, tunnels and pores
+  CHECK(a.report->json["tunnels"].size() == a.search.cavities.tunnels.size() + a.paths.size());
   CHECK(back.rows["structure"][2] == a.structure.atoms.size());
   const auto& first = back.rows["sites"][0];
-  CHECK(first[3] == a.report["sites"][0]["score"]);
-  CHECK(first[4] == a.report["sites"][0]["probability"]);
+  CHECK(first[3] == a.report->json["sites"][0]["score"]);
+  CHECK(first[4] == a.report->json["sites"][0]["probability"]);
   CHECK_THROWS_AS(molecule::parse_record(line.substr(0, line.size() / 2)), alpha::Error);  // a cut line
   CHECK_THROWS_AS(molecule::parse_record("{}"), alpha::Error);
 }

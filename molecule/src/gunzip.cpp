@@ -30,7 +30,8 @@ private:
 
 [[noreturn]] void too_large(const std::string& name, std::size_t max_bytes) {
   alpha::fail(name + ": decompresses to more than " + std::to_string(max_bytes >> 20) +
-              " MiB, the limit for a structure file (a gzip bomb? --max-input-mb raises it)");
+              " MiB, the limit for a structure file (a gzip bomb? --max-input-mb raises it)",
+              alpha::ErrorKind::LimitExceeded);
 }
 
 // Inflates every gzip member of data, handing each chunk of output to

@@ -31,8 +31,9 @@ namespace {
 // The problem may quote the file's own bytes (a record, a token): any
 // control or non-ASCII byte among them becomes '?', so the message stays
 // one line and prints nothing but text.
-[[noreturn]] void fail(const std::string& name, const std::string& what) {
-  throw StructureError(name + ": " + printable_ascii(what));
+[[noreturn]] void fail(const std::string& name, const std::string& what,
+                       alpha::ErrorKind kind = alpha::ErrorKind::BadInput) {
+  throw StructureError(name + ": " + printable_ascii(what), kind);
 }
 
 // ---------------------------------------------------------------- input
@@ -721,7 +722,8 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
 
 [[noreturn]] void too_large(const std::string& name, std::uintmax_t bytes, std::size_t max_mib) {
   fail(name, "is " + std::to_string(bytes >> 20) + " MiB, more than the limit for a structure file of " +
-                 std::to_string(max_mib) + " MiB (--max-input-mb raises it)");
+                 std::to_string(max_mib) + " MiB (--max-input-mb raises it)",
+       alpha::ErrorKind::LimitExceeded);
 }
 
 }  // namespace
@@ -734,7 +736,7 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
     try {
       unzipped = gunzip(data, name, options.max_input_mib << 20);
     } catch (const alpha::Error& e) {
-      throw StructureError(e.what());
+      throw StructureError(e.what(), e.kind());
     }
     data = unzipped;
   } else if (ends_with_ci(name, ".gz")) {
@@ -769,7 +771,7 @@ Structure read_structure(const std::string& path, const StructureOptions& option
   try {
     text = alpha::read_input_file(path);
   } catch (const alpha::Error& e) {
-    throw StructureError(e.what());
+    throw StructureError(e.what(), e.kind());
   }
   return parse_structure(text, path, options);
 }

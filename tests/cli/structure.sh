@@ -155,11 +155,14 @@ case $case_name in
     for _ in $(seq 513); do cat "$tmp/one.gz"; done >"$tmp/bomb.pdb.gz"
     run surface "$tmp/bomb.pdb.gz"
     expect_error "$tmp/bomb.pdb.gz: decompresses to more than 512 MiB" 'max-input-mb raises it'
+    [[ $rc -eq 5 ]] || fail "exit code $rc, expected 5 (a limit exceeded)"
     run surface "$tmp/bomb.pdb.gz" --max-input-mb 8
     expect_error "$tmp/bomb.pdb.gz: decompresses to more than 8 MiB"
+    [[ $rc -eq 5 ]] || fail "exit code $rc, expected 5 (a limit exceeded)"
     head -c $((9 << 20)) /dev/zero | tr '\0' ' ' >"$tmp/big.pdb"
     run surface "$tmp/big.pdb" --max-input-mb 8
     expect_error "$tmp/big.pdb: is 9 MiB, more than the limit for a structure file of 8 MiB"
+    [[ $rc -eq 5 ]] || fail "exit code $rc, expected 5 (a limit exceeded)"
     ;;
   mmcif_messages)
     # gemmi's own messages had no line ('Not a single character: VAL',
