@@ -25,6 +25,7 @@
 #include "molecule/analysis.hpp"
 #include "molecule/output_selection.hpp"
 #include "molecule/radii.hpp"
+#include "molecule/site_features.hpp"
 #include "molecule/surface.hpp"
 
 namespace py = pybind11;
@@ -51,6 +52,15 @@ std::vector<double> values_of(const Points& a, std::size_t n, const char* what) 
 
 py::array_t<double> array_of(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 
+// --max-input-mb: structure files above it (after gzip decompression) are
+// refused (LimitExceededError).
+std::size_t max_input_mib(const py::dict& o) {
+  const long long mib = o["max_input_mb"].cast<long long>();
+  if (mib < 1 || mib > (1 << 20))
+    throw alpha::Error("max_input_mb: " + std::to_string(mib) + " is not in 1..1048576", alpha::ErrorKind::Misuse);
+  return std::size_t(mib);
+}
+
 // The options of `alphapocket pockets`, by the CLI's names.
 molecule::AnalysisOptions analysis_options(const py::dict& o) {
   molecule::AnalysisOptions a;
@@ -62,12 +72,21 @@ molecule::AnalysisOptions analysis_options(const py::dict& o) {
   a.structure.keep_waters = o["keep_waters"].cast<bool>();
   a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
   a.structure.min_plddt = o["min_plddt"].cast<double>();
+  a.structure.max_input_mib = max_input_mib(o);
   a.radii_file = o["radii"].cast<std::string>();
   a.tunnels_from = o["tunnels_from"].cast<std::string>();
   a.tunnels.probe = o["tunnel_probe"].cast<double>();
   a.tunnels.pores = o["pores"].cast<bool>();
   a.mesh_format = o["mesh"].cast<std::string>();
-  a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
+  try {
+    a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("outputs: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
+  const std::string ranking = o["ranking"].cast<std::string>();
+  if (ranking != "probability" && ranking != "geometric")
+    throw alpha::Error("ranking: '" + ranking + "' is neither 'probability' nor 'geometric'", alpha::ErrorKind::Misuse);
+  a.ranking = ranking == "geometric" ? molecule::SiteRanking::geometric : molecule::SiteRanking::probability;
   return a;
 }
 
@@ -245,6 +264,11 @@ PYBIND11_MODULE(_core, m) {
              py::gil_scoped_release release;
              return molecule::write_outputs(a, outdir);
            })
+      .def("features_csv",
+           [](const molecule::Analysis& a) {
+             py::gil_scoped_release release;
+             return molecule::site_features_csv(a.structure, a.search.cavities);
+           })
       .def_property_readonly("file", [](const molecule::Analysis& a) { return a.file; });
 
   m.def("analyse_path", [](const std::string& path, const py::dict& options) {
@@ -262,6 +286,7 @@ PYBIND11_MODULE(_core, m) {
     so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
     so.keep_waters = selection["keep_waters"].cast<bool>();
     so.keep_hetero = selection["keep_hetero"].cast<bool>();
+    so.max_input_mib = max_input_mib(selection);
     so.min_atoms = 1;
     molecule::Surface s;
     {

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""A structure's candidate binding sites as a CSV table (no pandas needed).
+"""A structure's candidate binding sites as a CSV table (no pandas needed),
+ranked by the ligandability model's probability.
 
 Usage: sites_csv.py STRUCTURE [OUT.csv]   (stdout without OUT.csv)
 """
@@ -12,12 +13,13 @@ import alphapocket
 def main(path, out):
     analysis = alphapocket.analyze(path, tunnels_from="none")
     writer = csv.writer(out)
-    writer.writerow(["rank", "kind", "score", "sa_volume", "ms_volume", "center_x", "center_y", "center_z",
-                     "residues"])
+    writer.writerow(["rank", "kind", "probability", "score", "sa_volume", "ms_volume", "center_x", "center_y",
+                     "center_z", "residues"])
     for site in analysis.sites:
         x, y, z = site.center  # a numpy array
         residues = site.cavity.lining_residues  # tuples (chain, name, number, insertion code)
-        writer.writerow([site.rank, site.kind, site.score, site.sa_volume, site.cavity.ms_volume, x, y, z,
+        writer.writerow([site.rank, site.kind, site.probability, site.score, site.sa_volume, site.cavity.ms_volume,
+                         x, y, z,
                          " ".join(f"{c}:{n}:{num}{ins}" for c, n, num, ins in residues)])
 
 

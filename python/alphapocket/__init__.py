@@ -28,7 +28,8 @@ __all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", 
 # The defaults of `alphapocket pockets`.
 _ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=4.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
                          keep_hetero=False, min_plddt=0.0, radii="", tunnels_from="auto", tunnel_probe=0.9,
-                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels")
+                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels",
+                         ranking="probability", max_input_mb=512)
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
 
 
@@ -83,6 +84,25 @@ class Analysis:
     def to_json(self):
         """report.json's text, byte for byte."""
         return self._text
+
+    def features_csv(self):
+        """The ligandability model's features of every pocket, then every
+        void, as CSV text: the file `alphapocket pockets --features` writes."""
+        return self._core.features_csv()
+
+    def features(self):
+        """The same as columns: a dict from the CSV's header names (kind,
+        cavity_rank, site_rank, center_x.., the model's features,
+        ligandability, probability) to numpy arrays (kind: a list of str);
+        pandas.DataFrame(analysis.features()) makes a table of it."""
+        lines = self.features_csv().splitlines()
+        names = lines[0].split(",")
+        rows = [line.split(",") for line in lines[1:]]
+        columns = {"kind": [r[0] for r in rows]}
+        for j, name in enumerate(names[1:], start=1):
+            dtype = int if name in ("cavity_rank", "site_rank") else float
+            columns[name] = np.array([dtype(r[j]) for r in rows], dtype=dtype)
+        return columns
 
     def write(self, outdir):
         """Writes report.json, pockets.csv, the viewer scripts... into outdir
@@ -151,7 +171,11 @@ def analyze(structure=None, **options):
     options as `alphapocket pockets` names them: probe=1.4, min_volume=4,
     model, chains=[...], keep_hydrogens, keep_waters, keep_hetero, min_plddt,
     radii (a radius file), tunnels_from="auto", tunnel_probe=0.9, pores,
-    mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels" (what write() writes; a subset)."""
+    mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels" (what write() writes; a subset),
+    ranking="probability" (sites by the ligandability model's probability,
+    each site's .probability; "geometric": by .score), max_input_mb=512
+    (larger structure files, after gzip decompression, raise
+    LimitExceededError)."""
     source, arrays = _input(structure, options, options)
     unknown = set(options) - set(_ANALYZE_DEFAULTS)
     if unknown:
@@ -182,9 +206,9 @@ def surface(structure=None, probe=1.4, excluded=True, **selection):
     """Solvent-accessible (SA) and solvent-excluded (MS) area and volume, as
     `alphapocket surface --json`; excluded=False skips the MS surface
     (--sa-only). Selection: model, chains, keep_hydrogens, keep_waters,
-    keep_hetero."""
+    keep_hetero; max_input_mb=512 as in analyze()."""
     source, arrays = _input(structure, selection, selection)
-    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False)
+    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False, max_input_mb=512)
     unknown = set(selection) - set(sel)
     if unknown:
         raise MisuseError("surface: unknown option(s) " + ", ".join(sorted(unknown)))

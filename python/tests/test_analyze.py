@@ -79,3 +79,29 @@ def test_options_reach_the_search():
     assert a.report["parameters"]["probe"] == 1.6
     assert a.report["parameters"]["min_volume"] == 20
     assert a.tunnels == [] or all(t is not None for t in a.tunnels)
+
+
+def test_sites_carry_the_ligandability_probability(pdb_analysis):
+    """Sites are ranked by the model's probability (as the CLI's default),
+    each with .probability in [0, 1]; ranking="geometric" orders by score."""
+    sites = pdb_analysis.sites
+    assert all(0 <= s.probability <= 1 for s in sites)
+    assert [s.probability for s in sites] == sorted((s.probability for s in sites), reverse=True)
+    assert all(s.probability == s.cavity.probability for s in sites)
+    geometric = alphapocket.analyze(PDB, ranking="geometric", tunnels_from="none")
+    assert [s.score for s in geometric.sites] == sorted((s.score for s in geometric.sites), reverse=True)
+    assert [s.score for s in sites] != [s.score for s in geometric.sites]  # the two rankings differ here
+
+
+def test_features_equal_the_cli_file(pdb_analysis, tmp_path):
+    cli("pockets", PDB, "-o", tmp_path / "out", "--features", tmp_path / "features.csv", "-q")
+    text = (tmp_path / "features.csv").read_text()
+    assert pdb_analysis.features_csv() == text
+    columns = pdb_analysis.features()
+    n = len(pdb_analysis.pockets) + len(pdb_analysis.voids)
+    assert list(columns) == text.splitlines()[0].split(",")
+    assert len(columns["kind"]) == n and columns["burial_14"].shape == (n,) and columns["site_rank"].dtype == int
+    site = pdb_analysis.sites[0]
+    row = [i for i in range(n) if columns["site_rank"][i] == 1][0]
+    assert columns["kind"][row] == site.kind and columns["cavity_rank"][row] == site.cavity_rank
+    assert columns["probability"][row] == pytest.approx(site.probability, abs=5e-5)

@@ -6,9 +6,9 @@ import alphapocket
 from conftest import DATA, cli
 
 
-def cli_message(*args):
+def cli_message(*args, code=1):
     r = cli(*args, check=False)
-    assert r.returncode == 1
+    assert r.returncode == code
     return r.stderr.strip().removeprefix("ERROR: ")
 
 
@@ -19,6 +19,22 @@ def test_bad_files(name, tmp_path):
         alphapocket.analyze(path)
     assert str(e.value) == cli_message("pockets", path, "-o", tmp_path / "out", "-q")
     assert isinstance(e.value, alphapocket.Error)
+
+
+def test_input_size_limit(tmp_path):
+    """A file above max_input_mb is a limit exceeded (the CLI's exit 5)."""
+    big = tmp_path / "big.pdb"
+    big.write_bytes(b" " * (3 << 20))
+    message = cli_message("surface", big, "--max-input-mb", "2", code=5)
+    assert "more than the limit for a structure file of 2 MiB" in message
+    with pytest.raises(alphapocket.LimitExceededError) as e:
+        alphapocket.surface(big, max_input_mb=2)
+    assert str(e.value) == message
+    with pytest.raises(alphapocket.LimitExceededError) as e:
+        alphapocket.analyze(big, max_input_mb=2)
+    assert str(e.value) == message
+    with pytest.raises(alphapocket.MisuseError):
+        alphapocket.analyze(big, max_input_mb=0)
 
 
 def test_coplanar_atoms():
@@ -36,6 +52,10 @@ def test_misuse():
         alphapocket.analyze(DATA / "1fkgA.pdb", no_such_option=1)
     with pytest.raises(alphapocket.MisuseError):
         alphapocket.analyze(coordinates=np.eye(5, 3), radii=[1.0])
+    with pytest.raises(alphapocket.MisuseError, match="unknown output 'reports'"):
+        alphapocket.analyze(DATA / "1fkgA.pdb", outputs="reports")
+    with pytest.raises(alphapocket.MisuseError, match="ranking"):
+        alphapocket.analyze(DATA / "1fkgA.pdb", ranking="best")
     with pytest.raises(alphapocket.MisuseError):
         alphapocket.surface(coordinates=[[0, 0, 0]], radii=[1.0], probe=-1)
 

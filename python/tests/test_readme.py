@@ -27,10 +27,12 @@ def test_sites_csv_example(tmp_path):
     out = tmp_path / "sites.csv"
     subprocess.run([sys.executable, ROOT / "examples" / "python" / "sites_csv.py", PDB, out], check=True)
     rows = out.read_text().splitlines()
-    assert rows[0].startswith("rank,kind,score,sa_volume")
+    assert rows[0].startswith("rank,kind,probability,score,sa_volume")
     assert len(rows) > 5
-    rank, kind, score = rows[1].split(",")[:3]
-    assert rank == "1" and kind in ("pocket", "void") and float(score) > 0
+    rank, kind, probability, score = rows[1].split(",")[:4]
+    assert rank == "1" and kind in ("pocket", "void") and 0 < float(probability) <= 1 and float(score) > 0
+    probabilities = [float(row.split(",")[2]) for row in rows[1:]]
+    assert probabilities == sorted(probabilities, reverse=True)
 
 
 def test_persistence_example():

@@ -33,7 +33,7 @@ awk '/^```cpp/{f=1;next} /^```/{f=0} f' "$tmp/section.md" >"$tmp/sites/sites.cpp
 cmake -S "$tmp/sites" -B "$tmp/sites/build" -G Ninja -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
 cmake --build "$tmp/sites/build" >/dev/null
 "$tmp/sites/build/sites" "$root/examples/data/1a26A.pdb" "$tmp/out" >"$tmp/stdout"
-grep -q '^pocket 1: score ' "$tmp/stdout" || fail "no 'pocket 1' line: $(cat "$tmp/stdout")"
+grep -qE '^(pocket|void) [0-9]+: probability [01]\.[0-9]+, score ' "$tmp/stdout" || fail "no site line: $(cat "$tmp/stdout")"
 grep -q '^SA area .* A^2, MS volume .* A^3$' "$tmp/stdout" || fail "no surface line"
 "$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none -o "$tmp/cli" -q >/dev/null
 cmp "$tmp/out/report.json" "$tmp/cli/report.json" || fail "report.json differs from the CLI's"
