@@ -153,6 +153,7 @@ py::dict surface_dict(const molecule::Surface& s) {
   d["ms_area"] = s.ms_area ? py::cast(*s.ms_area) : py::none();
   d["ms_volume"] = s.ms_volume ? py::cast(*s.ms_volume) : py::none();
   d["atom_areas"] = array_of(s.ball_areas);
+  d["atom_volumes"] = array_of(s.ball_volumes);
   return d;
 }
 

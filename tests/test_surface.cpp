@@ -52,6 +52,15 @@ TEST_CASE("surface job: one ball and two overlapping balls in closed form") {
   CHECK(two.ball_areas.size() == 2);
   CHECK(two.ball_areas[0] == Approx(3 * pi).epsilon(1e-12));
   CHECK_FALSE(two.ms_area.has_value());  // bare balls: no probe, no MS surface
+  // Radii 2 and 1, 2 apart: the power plane x = (d^2 + r1^2 - r2^2) / 2d =
+  // 7/4 cuts a cap of height 1/4 off the first ball and 3/4 off the second;
+  // each ball keeps the rest as its volume.
+  const auto cap = [](double h, double r) { return pi * h * h * (3 * r - h) / 3; };
+  const molecule::Surface unequal = molecule::measure_balls({{0, 0, 0}, {2, 0, 0}}, {4, 1});
+  REQUIRE(unequal.ball_volumes.size() == 2);
+  CHECK(unequal.ball_volumes[0] == Approx(4.0 / 3 * pi * 8 - cap(0.25, 2)).epsilon(1e-12));
+  CHECK(unequal.ball_volumes[1] == Approx(4.0 / 3 * pi - cap(0.75, 1)).epsilon(1e-12));
+  CHECK(unequal.ball_volumes[0] + unequal.ball_volumes[1] == Approx(unequal.sa_volume).epsilon(1e-12));
 }
 
 TEST_CASE("surface job: flat molecules, --sa-only, determinism") {
@@ -61,6 +70,8 @@ TEST_CASE("surface job: flat molecules, --sa-only, determinism") {
   CHECK(s.ball_areas.size() == 3);
   CHECK(s.ball_areas[0] + s.ball_areas[1] + s.ball_areas[2] == Approx(s.sa_area).epsilon(1e-12));
   CHECK(s.ball_areas[0] == s.ball_areas[2]);
+  REQUIRE(s.ball_volumes.size() == 3);  // the far points' balls are not the atoms'
+  CHECK(s.ball_volumes[0] + s.ball_volumes[1] + s.ball_volumes[2] == Approx(s.sa_volume).epsilon(1e-12));
   CHECK_FALSE(s.ms_area.has_value());
   const molecule::Surface again = molecule::measure_surface(line, {.probe = 1.4, .excluded = false});
   CHECK(again.sa_area == s.sa_area);

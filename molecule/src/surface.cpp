@@ -43,6 +43,8 @@ Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, s
   s.sa_volume = u.volume();
   const auto areas = u.ball_areas();
   s.ball_areas.assign(areas.begin(), areas.begin() + s.balls);  // not the far points
+  const auto volumes = u.ball_volumes();
+  s.ball_volumes.assign(volumes.begin(), volumes.begin() + s.balls);
   if (erode) {
     start = std::chrono::steady_clock::now();
     const alpha::LayerShare layer = alpha::ErodedUnion(u, *erode).layer();

@@ -192,7 +192,9 @@ def analyze(structure=None, **options):
 
 class SurfaceResult:
     """sa_area, sa_volume (A^2, A^3), ms_area, ms_volume (None with
-    excluded=False), atom_areas (numpy: SA area per atom), atoms."""
+    excluded=False), atom_areas and atom_volumes (numpy, per atom: the SA
+    area of its sphere, the SA volume of its ball in its power cell; they
+    sum to sa_area and sa_volume), atoms."""
 
     def __init__(self, d):
         self.__dict__.update(d)

@@ -2,6 +2,7 @@
 import json
 
 import numpy as np
+import pytest
 
 import alphapocket
 from conftest import PDB, SMALL, cli
@@ -16,6 +17,8 @@ def test_equals_cli():
     assert isinstance(s.atom_areas, np.ndarray)
     assert s.atom_areas.tolist() == [a["area"] for a in out["per_atom"]]
     assert abs(s.atom_areas.sum() - s.sa_area) <= 1e-9 * s.sa_area
+    assert s.atom_volumes.shape == (s.atoms,) and (s.atom_volumes >= 0).all()
+    assert abs(s.atom_volumes.sum() - s.sa_volume) <= 1e-9 * s.sa_volume
 
 
 def test_sa_only_and_probe():
@@ -32,3 +35,13 @@ def test_one_ball_closed_form():
     assert abs(s.sa_volume - 4 / 3 * np.pi * r ** 3) < 1e-9
     # The molecular surface of one ball is the ball itself.
     assert abs(s.ms_volume - 4 / 3 * np.pi * 1.5 ** 3) < 1e-9
+
+
+def test_two_balls_per_atom_closed_form():
+    """Radii 2 and 1, 2 apart: the power plane at x = 7/4 cuts caps of
+    height 1/4 and 3/4; each atom keeps the rest of its ball and sphere."""
+    s = alphapocket.surface(coordinates=[[0, 0, 0], [2, 0, 0]], radii=[2.0, 1.0], probe=0, excluded=False)
+    cap_volume = lambda h, r: np.pi * h * h * (3 * r - h) / 3
+    assert s.atom_volumes == pytest.approx([32 / 3 * np.pi - cap_volume(0.25, 2), 4 / 3 * np.pi - cap_volume(0.75, 1)],
+                                           rel=1e-12)
+    assert s.atom_areas == pytest.approx([16 * np.pi - 2 * np.pi * 2 * 0.25, 4 * np.pi - 2 * np.pi * 0.75], rel=1e-12)

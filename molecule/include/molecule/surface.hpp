@@ -29,7 +29,8 @@ struct Surface {
   // The solvent-excluded (molecular) surface: none for bare balls or
   // without SurfaceOptions::excluded.
   std::optional<double> ms_area, ms_volume;
-  std::vector<double> ball_areas;  // SA area of each ball (atom), in input order; 0 for a buried one
+  std::vector<double> ball_areas;    // SA area of each ball (atom), in input order; 0 for a buried one
+  std::vector<double> ball_volumes;  // SA volume of each: its ball within its power cell (sum: sa_volume)
   std::size_t hidden = 0;          // balls inside others (no power cell)
   double complex_seconds = 0, union_seconds = 0, excluded_seconds = 0;  // wall clock, for logs
 };
