@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The installed package: `cmake --install` into a temporary prefix, no GMP,
 # nlohmann, OpenMesh or gemmi in the installed headers, then README's "Use
-# from C++" example built there with find_package(alphapocket) and run, and
-# the pkg-config file's version and flags.
+# from C++" example built there with find_package(alphapocket) and run, the
+# pkg-config file's version and flags, and the Python module imported from
+# the prefix.
 # Usage: find_package.sh BUILD_DIR REPO_ROOT
 set -euo pipefail
 build=$1
@@ -52,4 +53,18 @@ printf '#include "alphapocket/version.hpp"\n#include "alpha/triangulation.hpp"\n
 # shellcheck disable=SC2046
 g++ "$tmp/pc.cpp" -o "$tmp/pc" $(pkg-config --cflags --libs --static alphapocket)
 [[ $("$tmp/pc") == "$version 1" ]] || fail "pkg-config program printed '$("$tmp/pc")'"
+# The Python module, when built: `cmake --install --component python` puts
+# it under the prefix (lib/python3.X/dist-packages), importable from there.
+if compgen -G "$build/python/alphapocket/_core*.so" >/dev/null; then
+  cmake --install "$build" --prefix "$tmp/prefix" --component python >/dev/null
+  init=$(find "$tmp/prefix" -path '*/dist-packages/alphapocket/__init__.py')
+  [[ -n $init ]] || fail "the Python package was not installed under dist-packages"
+  site=$(dirname "$(dirname "$init")")
+  (cd "$tmp" && PYTHONPATH=$site /usr/bin/python3 -c "
+import alphapocket, sys
+assert alphapocket.__file__.startswith('$site'), alphapocket.__file__
+a = alphapocket.analyze('$root/examples/data/1a26A.pdb', tunnels_from='none')
+assert a.to_json() == open('$tmp/cli/report.json').read()
+") || fail "the installed Python module does not give report.json"
+fi
 echo PASS
