@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -169,16 +170,25 @@ public:
     ac_ = std::make_unique<alpha::AlphaComplex>(*t_);
   }
 
+  // Every loop over the complex runs without the GIL (a spectrum of 10^5
+  // values takes a second); only the copy into numpy holds it.
   py::array_t<double> spectrum() const {
     std::vector<double> v(ac_->spectrum_size());
-    for (std::size_t i = 0; i < v.size(); ++i) v[i] = ac_->spectrum_value(alpha::Index(i));
+    {
+      py::gil_scoped_release release;
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = ac_->spectrum_value(alpha::Index(i));
+    }
     return array_of(v);
   }
 
   // Counts per dimension (rows: vertices, edges, triangles, tetrahedra) and
   // class (columns: exterior, singular, regular, interior).
   py::array_t<std::int64_t> classify(double alpha_sq) const {
-    const alpha::ClassCounts c = ac_->counts(ac_->level(alpha_sq));
+    alpha::ClassCounts c;
+    {
+      py::gil_scoped_release release;
+      c = ac_->counts(ac_->level(alpha_sq));
+    }
     py::array_t<std::int64_t> out({4, 4});
     auto m = out.mutable_unchecked<2>();
     for (int d = 0; d < 4; ++d)
@@ -195,24 +205,29 @@ public:
   // Rows (dim, birth alpha_sq, death alpha_sq), death inf for classes that
   // never die.
   py::array_t<double> persistence() const {
-    std::vector<alpha::PersistencePair> pairs;
+    std::vector<double> rows;
     {
       py::gil_scoped_release release;
-      pairs = ac_->persistence();
+      const std::vector<alpha::PersistencePair> pairs = ac_->persistence();
+      rows.reserve(3 * pairs.size());
+      for (const alpha::PersistencePair& p : pairs) {
+        rows.push_back(p.dim);
+        rows.push_back(ac_->spectrum_value(p.birth));
+        rows.push_back(p.death == alpha::kNever ? INFINITY : ac_->spectrum_value(p.death));
+      }
     }
-    py::array_t<double> out({py::ssize_t(pairs.size()), py::ssize_t(3)});
-    auto m = out.mutable_unchecked<2>();
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      m(i, 0) = pairs[i].dim;
-      m(i, 1) = ac_->spectrum_value(pairs[i].birth);
-      m(i, 2) = pairs[i].death == alpha::kNever ? INFINITY : ac_->spectrum_value(pairs[i].death);
-    }
+    py::array_t<double> out({py::ssize_t(rows.size() / 3), py::ssize_t(3)});
+    std::copy(rows.begin(), rows.end(), out.mutable_data());
     return out;
   }
 
   // The shape's boundary at alpha_sq: (vertices (V, 3), faces (F, 3) outward).
   py::tuple shape_mesh(double alpha_sq) const {
-    const alpha::ShapeBoundary b = ac_->boundary(ac_->level(alpha_sq));
+    alpha::ShapeBoundary b;
+    {
+      py::gil_scoped_release release;
+      b = ac_->boundary(ac_->level(alpha_sq));
+    }
     const auto points = t_->points();
     py::array_t<double> v({py::ssize_t(points.size()), py::ssize_t(3)});
     auto mv = v.mutable_unchecked<2>();

@@ -1,5 +1,11 @@
-# Long calls release the GIL: 4 threads give the serial results.
+# Long calls release the GIL: 4 threads give the serial results, and other
+# Python threads keep running during each long call.
+import sys
+import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
 
 import alphapocket
 from conftest import DATA, PDB, SMALL
@@ -15,3 +21,49 @@ def test_four_threads_equal_serial():
     with ThreadPoolExecutor(4) as pool:
         areas = list(pool.map(lambda f: alphapocket.surface(f).ms_area, FILES))
     assert areas == [alphapocket.surface(f).ms_area for f in FILES]
+
+
+def longest_pause(call):
+    """Runs call() in a thread while this one counts: (the call's seconds,
+    the longest this thread went without running). A call holding the GIL
+    stops this thread for all of its time."""
+    done = threading.Event()
+    seconds = []
+
+    def work():
+        start = time.perf_counter()
+        call()
+        seconds.append(time.perf_counter() - start)
+        done.set()
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(0.001)
+    try:
+        worker = threading.Thread(target=work)
+        worst = 0.0
+        last = time.perf_counter()
+        worker.start()
+        while True:  # the first pause counts from the start, the last up to the end
+            now = time.perf_counter()
+            worst = max(worst, now - last)
+            last = now
+            if done.is_set():
+                break
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    return seconds[0], worst
+
+
+def test_long_calls_let_other_threads_run():
+    points = np.random.default_rng(0).normal(size=(12000, 3))
+    complex_ = alphapocket.AlphaComplex(points)
+    calls = {"analyze": lambda: alphapocket.analyze(PDB, tunnels_from="none"),
+             "surface": lambda: alphapocket.surface(PDB),
+             "AlphaComplex": lambda: alphapocket.AlphaComplex(points),
+             "spectrum": lambda: complex_.spectrum,
+             "persistence": lambda: complex_.persistence()}
+    for name, call in calls.items():
+        seconds, pause = longest_pause(call)
+        assert seconds > 0.1, f"{name}: too short a call to tell ({seconds:.3f} s)"
+        assert pause < seconds / 2, f"{name}: other threads stopped for {pause:.3f} of {seconds:.3f} s"
