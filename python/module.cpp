@@ -99,6 +99,14 @@ Analysis analyse_path(const std::string& path, const py::dict& options) {
   return std::make_shared<const molecule::Analysis>(molecule::analyse(path, o));
 }
 
+// A structure file's text (e.g. gemmi's mmCIF of a gemmi.Structure), read
+// as the file would be.
+Analysis analyse_text(const std::string& name, const std::string& text, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse_content(name, text, o));
+}
+
 // Atoms from arrays: radii given, or ProtOr radii from residue, atom names
 // and elements.
 molecule::Structure structure_of(const Points& xyz, const std::optional<Points>& radii, const py::dict& names) {
@@ -144,6 +152,19 @@ Analysis analyse_arrays(const std::string& name, const Points& xyz, const std::o
   molecule::Structure s = structure_of(xyz, radii, names);
   py::gil_scoped_release release;
   return std::make_shared<const molecule::Analysis>(molecule::analyse_structure(name, std::move(s), o));
+}
+
+// The atom selection of `alphapocket surface` (one atom is enough).
+molecule::StructureOptions surface_selection(const py::dict& selection) {
+  molecule::StructureOptions so;
+  so.model = selection["model"].cast<int>();
+  so.chains = selection["chains"].cast<std::vector<std::string>>();
+  so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
+  so.keep_waters = selection["keep_waters"].cast<bool>();
+  so.keep_hetero = selection["keep_hetero"].cast<bool>();
+  so.max_input_mib = max_input_mib(selection);
+  so.min_atoms = 1;
+  return so;
 }
 
 py::dict surface_dict(const molecule::Surface& s) {
@@ -290,24 +311,30 @@ PYBIND11_MODULE(_core, m) {
   m.def("analyse_path", [](const std::string& path, const py::dict& options) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));
   });
+  m.def("analyse_text", [](const std::string& name, const std::string& text, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_text(name, text, options));
+  });
   m.def("analyse_arrays", [](const std::string& name, const Points& xyz, const std::optional<Points>& radii,
                              const py::dict& names, const py::dict& options) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_arrays(name, xyz, radii, names, options));
   });
 
   m.def("surface_path", [](const std::string& path, double probe, bool excluded, const py::dict& selection) {
-    molecule::StructureOptions so;
-    so.model = selection["model"].cast<int>();
-    so.chains = selection["chains"].cast<std::vector<std::string>>();
-    so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
-    so.keep_waters = selection["keep_waters"].cast<bool>();
-    so.keep_hetero = selection["keep_hetero"].cast<bool>();
-    so.max_input_mib = max_input_mib(selection);
-    so.min_atoms = 1;
+    const molecule::StructureOptions so = surface_selection(selection);
     molecule::Surface s;
     {
       py::gil_scoped_release release;
       s = molecule::surface_of_file(path, so, {probe, excluded});
+    }
+    return surface_dict(s);
+  });
+  m.def("surface_text", [](const std::string& name, const std::string& text, double probe, bool excluded,
+                           const py::dict& selection) {
+    const molecule::StructureOptions so = surface_selection(selection);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::surface_of_content(name, text, so, {probe, excluded});
     }
     return surface_dict(s);
   });

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "alpha/error.hpp"
+#include "alpha/input_file.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/surface.hpp"
 
@@ -90,6 +91,20 @@ TEST_CASE("surface job: error kinds, and the file named") {
   } catch (const alpha::Error& e) {
     CHECK(e.kind() == alpha::ErrorKind::BadInput);
     CHECK(std::string(e.what()).starts_with(missing + ": "));
+  }
+  // A file's bytes measure as the file does; errors name the given name.
+  const std::string file = std::string(ALPHAPOCKET_TEST_DATA) + "/1fkgA.pdb";
+  const molecule::Surface from_file = molecule::surface_of_file(file, {}, {.excluded = false});
+  const molecule::Surface from_content =
+      molecule::surface_of_content("x.pdb", alpha::read_input_file(file), {}, {.excluded = false});
+  CHECK(from_content.sa_area == from_file.sa_area);
+  CHECK(from_content.ball_areas == from_file.ball_areas);
+  try {
+    molecule::surface_of_content("x.pdb", "HETATM", {});
+    FAIL("no error");
+  } catch (const alpha::Error& e) {
+    CHECK(e.kind() == alpha::ErrorKind::BadInput);
+    CHECK(std::string(e.what()).starts_with("x.pdb: "));
   }
 }
 

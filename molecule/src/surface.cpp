@@ -69,13 +69,25 @@ Surface measure_balls(std::vector<alpha::Vec3> centres, std::vector<double> weig
   return measured(std::move(centres), std::move(weights), std::nullopt);
 }
 
-Surface surface_of_file(const std::string& path, const StructureOptions& selection, const SurfaceOptions& options) {
-  const Structure structure = read_structure(path, selection);
+namespace {
+
+Surface measure_named(const std::string& name, const Structure& structure, const SurfaceOptions& options) {
   try {
     return measure_surface(structure.atoms, options);
   } catch (const alpha::Error& e) {
-    throw alpha::in_file(path, e);
+    throw alpha::in_file(name, e);
   }
+}
+
+}  // namespace
+
+Surface surface_of_file(const std::string& path, const StructureOptions& selection, const SurfaceOptions& options) {
+  return measure_named(path, read_structure(path, selection), options);
+}
+
+Surface surface_of_content(const std::string& name, std::string_view content, const StructureOptions& selection,
+                           const SurfaceOptions& options) {
+  return measure_named(name, parse_structure(content, name, selection), options);
 }
 
 }  // namespace molecule

@@ -4,10 +4,11 @@ analyze(structure) finds the pockets, voids and tunnels of a structure as
 `alphapocket pockets` does; surface(structure) measures its solvent-accessible
 and molecular surfaces as `alphapocket surface` does; AlphaComplex(points)
 gives the alpha complex of any (weighted) point cloud. A structure is a file
-path, a gemmi.Structure (python3-gemmi; read through plain attributes, so no
-binary coupling to gemmi), or arrays given as keywords (coordinates=N x 3,
-radii=N, optional atom_names, residue_names, elements, chains,
-residue_numbers). Long calls release the GIL: threads run in parallel.
+path, a gemmi.Structure (python3-gemmi; gemmi writes it as mmCIF text, read
+as a file would be: the same atom selection, no binary coupling to gemmi),
+or arrays given as keywords (coordinates=N x 3, radii=N, optional
+atom_names, residue_names, elements, chains, residue_numbers). Long calls
+release the GIL: threads run in parallel.
 
 Errors raise alphapocket.BadInputError (the input cannot be used),
 LimitExceededError (too large) or MisuseError (a wrong call), all subclasses
@@ -114,47 +115,26 @@ def _is_gemmi(structure):
     return type(structure).__module__.split(".")[0] == "gemmi"
 
 
-def _gemmi_arrays(structure, model, chains, keep_hydrogens, keep_waters, keep_hetero):
-    """Atoms of a gemmi.Structure as arrays (no altlocs but the first)."""
-    models = list(structure)
-    chosen = models[0] if not model else next((m for m in models if str(m.name) == str(model)), None)
-    if chosen is None:
-        raise BadInputError(f"{structure.name}: no model {model}")
-    columns = {k: [] for k in ("coordinates",) + _ARRAY_KEYS}
-    for chain in chosen:
-        if chains and chain.name not in chains:
-            continue
-        for residue in chain:
-            water = residue.is_water()
-            hetero = residue.het_flag == "H" and not water
-            if (water and not keep_waters) or (hetero and not keep_hetero):
-                continue
-            for atom in residue:
-                if atom.altloc not in ("\0", "A"):
-                    continue
-                if atom.element.name in ("H", "D") and not keep_hydrogens:
-                    continue
-                columns["coordinates"].append((atom.pos.x, atom.pos.y, atom.pos.z))
-                columns["atom_names"].append(atom.name)
-                columns["residue_names"].append(residue.name)
-                columns["elements"].append(atom.element.name)
-                columns["chains"].append(chain.name)
-                columns["residue_numbers"].append(residue.seqid.num)
-    return columns
+def _gemmi_mmcif(structure):
+    """gemmi's mmCIF of the structure, with ATOM/HETATM (group_PDB, which
+    gemmi leaves out by default): what tells ligands from the polymer."""
+    import gemmi
+    groups = gemmi.MmcifOutputGroups(True)
+    groups.group_pdb = True
+    return structure.make_mmcif_document(groups).as_string()
 
 
-def _input(structure, kwargs, selection):
-    """(path, None) or (name, arrays) for the core."""
+def _input(structure, kwargs):
+    """("path", path, None), ("text", name, mmCIF text) for a gemmi.Structure
+    (gemmi writes it, the core reads it as a file: the same selection, no
+    binary coupling), or ("arrays", name, arrays) for the core."""
     if isinstance(structure, (str, os.PathLike)):
-        return os.fspath(structure), None
+        return "path", os.fspath(structure), None
     if _is_gemmi(structure):
-        arrays = _gemmi_arrays(structure, selection.get("model", 0), selection.get("chains", []),
-                               selection.get("keep_hydrogens", False), selection.get("keep_waters", False),
-                               selection.get("keep_hetero", False))
-        return structure.name or "gemmi structure", arrays
+        return "text", structure.name or "gemmi structure", _gemmi_mmcif(structure)
     if structure is None and "coordinates" in kwargs:
         arrays = {k: kwargs.pop(k) for k in ("coordinates", "radii") + _ARRAY_KEYS if k in kwargs}
-        return kwargs.pop("name", "arrays"), arrays
+        return "arrays", kwargs.pop("name", "arrays"), arrays
     raise MisuseError("analyze/surface: give a file path, a gemmi.Structure or coordinates=... (and radii=...)")
 
 
@@ -176,7 +156,7 @@ def analyze(structure=None, **options):
     each site's .probability; "geometric": by .score), max_input_mb=512
     (larger structure files, after gzip decompression, raise
     LimitExceededError)."""
-    source, arrays = _input(structure, options, options)
+    kind, source, data = _input(structure, options)
     unknown = set(options) - set(_ANALYZE_DEFAULTS)
     if unknown:
         raise MisuseError("analyze: unknown option(s) " + ", ".join(sorted(unknown)))
@@ -185,9 +165,11 @@ def analyze(structure=None, **options):
     opts["radii"] = os.fspath(opts["radii"])
     if isinstance(opts["tunnels_from"], int):
         opts["tunnels_from"] = str(opts["tunnels_from"])
-    if arrays is None:
+    if kind == "path":
         return Analysis(_core.analyse_path(source, opts))
-    return Analysis(_core.analyse_arrays(source, *_core_arrays(arrays), opts))
+    if kind == "text":
+        return Analysis(_core.analyse_text(source, data, opts))
+    return Analysis(_core.analyse_arrays(source, *_core_arrays(data), opts))
 
 
 class SurfaceResult:
@@ -209,13 +191,15 @@ def surface(structure=None, probe=1.4, excluded=True, **selection):
     `alphapocket surface --json`; excluded=False skips the MS surface
     (--sa-only). Selection: model, chains, keep_hydrogens, keep_waters,
     keep_hetero; max_input_mb=512 as in analyze()."""
-    source, arrays = _input(structure, selection, selection)
+    kind, source, data = _input(structure, selection)
     sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False, max_input_mb=512)
     unknown = set(selection) - set(sel)
     if unknown:
         raise MisuseError("surface: unknown option(s) " + ", ".join(sorted(unknown)))
     sel.update(selection)
     sel["chains"] = list(sel["chains"])
-    if arrays is None:
+    if kind == "path":
         return SurfaceResult(_core.surface_path(source, float(probe), bool(excluded), sel))
-    return SurfaceResult(_core.surface_arrays(*_core_arrays(arrays), float(probe), bool(excluded)))
+    if kind == "text":
+        return SurfaceResult(_core.surface_text(source, data, float(probe), bool(excluded), sel))
+    return SurfaceResult(_core.surface_arrays(*_core_arrays(data), float(probe), bool(excluded)))

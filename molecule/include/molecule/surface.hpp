@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "alpha/geometry.hpp"
@@ -49,5 +50,9 @@ Surface measure_balls(std::vector<alpha::Vec3> centres, std::vector<double> weig
 // enough for a surface), measured; errors name the file.
 Surface surface_of_file(const std::string& path, const StructureOptions& selection,
                         const SurfaceOptions& options = {});
+// The same from the file's bytes (molecule::parse_structure); `name` stands
+// for the file in messages.
+Surface surface_of_content(const std::string& name, std::string_view content, const StructureOptions& selection,
+                           const SurfaceOptions& options = {});
 
 }  // namespace molecule
