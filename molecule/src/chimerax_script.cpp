@@ -42,8 +42,9 @@ std::string header(const PocketRun& run, const ViewerScene& scene) {
   s += "# Open with `chimerax pockets.cxc` or `open pockets.cxc` in ChimeraX. Model #1 is structure.cif\n";
   s += "# (" + scene.object + ": the atoms searched and the ligands). Coloured by site rank (report.json sites).\n";
   s += "# pocket_N names the atoms lining pocket N (void_N likewise). #2 holds the cavities' spaces (spheres\n";
-  s += "# at their sinks), #3 their centres, #4 the tunnels' bottlenecks (cyan). Sites after the " +
-       std::to_string(kShownSites) + "th are hidden.\n";
+  s += "# at their sinks), #3 their centres, #4 the tunnels' bottlenecks (cyan), #5 the tunnels and pores\n";
+  s += "# with a path as spheres of their radius profile (tunnel_N_path, shades of cyan, tunnel_N names the\n";
+  s += "# lining residues). Sites after the " + std::to_string(kShownSites) + "th are hidden.\n";
   return s;
 }
 
@@ -105,6 +106,14 @@ std::string tunnels(const ViewerScene& scene) {
     s += "rename " + model + " " + t.name + "_bottleneck\n";
   }
   if (!scene.tunnels.empty()) s += "transparency #4 50 target a\n";
+  for (std::size_t k = 0; k < scene.paths.size(); ++k) {
+    const ScenePath& p = scene.paths[k];
+    const std::string model = "#5." + std::to_string(k + 1);
+    if (!p.lining_ids.empty()) s += "name " + p.name + " " + atoms_spec(p.lining_ids) + "\n";
+    for (const SinkSphere& sphere : p.spheres) s += marker(model, sphere, p.color);
+    if (!p.spheres.empty()) s += "rename " + model + " " + p.name + "_path\n";
+  }
+  if (!scene.paths.empty()) s += "transparency #5 30 target a\n";
   return s;
 }
 

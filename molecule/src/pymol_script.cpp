@@ -50,7 +50,9 @@ std::string header(const PocketRun& run, const ViewerScene& scene) {
   s += "# Coloured by site rank (report.json sites). pocket_N selects the atoms lining pocket N,\n";
   s += "# pocket_N_space is its space (spheres at its sinks), pocket_N_center its centre (void_N likewise).\n";
   s += "# Sites after the " + std::to_string(kShownSites) + "th are loaded but disabled. tunnel_N selects the atoms of\n";
-  s += "# tunnel N's bottleneck, tunnel_N_bottleneck is the largest probe passing it (cyan).\n";
+  s += "# tunnel N's bottleneck, tunnel_N_bottleneck is the largest probe passing it (cyan). For tunnels\n";
+  s += "# and pores with a path (report.json tunnels of kind tunnel or pore), tunnel_N selects the lining\n";
+  s += "# residues and tunnel_N_path is the centreline as spheres of the radius profile (shades of cyan).\n";
   return s;
 }
 
@@ -116,8 +118,19 @@ std::string tunnels(const ViewerScene& scene) {
     s += "color ap_tunnel, tunnel_*_bottleneck\n";
     s += "show spheres, tunnel_*_bottleneck\n";
     s += "set sphere_transparency, 0.5, tunnel_*_bottleneck\n";
-    s += "group tunnels, tunnel_*_bottleneck\n";
   }
+  for (const ScenePath& p : scene.paths) {
+    s += "set_color ap_" + p.name + ", " + rgb(p.color) + "\n";
+    s += select_lines(p.name, scene.object, p.lining_ids);
+    for (const SinkSphere& sphere : p.spheres)
+      s += "pseudoatom " + p.name + "_path, " + position(sphere.center) + ", vdw=" + script_number(sphere.radius) + "\n";
+    s += "color ap_" + p.name + ", " + p.name + "_path\n";
+  }
+  if (!scene.paths.empty()) {
+    s += "show spheres, tunnel_*_path\n";
+    s += "set sphere_transparency, 0.3, tunnel_*_path\n";
+  }
+  if (!scene.tunnels.empty() || !scene.paths.empty()) s += "group tunnels, tunnel_*_bottleneck tunnel_*_path\n";
   return s;
 }
 

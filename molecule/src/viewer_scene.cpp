@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <string_view>
 
 #include "alpha/sizes.hpp"
@@ -75,6 +76,19 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
     const Tunnel& t = cavities.tunnels[i];
     scene.tunnels.push_back({"tunnel_" + std::to_string(i + 1), ids_of(t.lining_atoms),
                              {t.bottleneck_center, t.bottleneck_radius}});
+  }
+  if (run.paths) {
+    const std::vector<Atom>& atoms = run.structure->atoms;
+    for (std::size_t k = 0; k < run.paths->size(); ++k) {
+      const TunnelPath& p = (*run.paths)[k];
+      ScenePath path{"tunnel_" + std::to_string(cavities.tunnels.size() + k + 1), tunnel_color(k), {}, {}};
+      std::set<std::string> residues;
+      for (const alpha::Index i : p.lining_atoms) residues.insert(residue_id(atoms.at(i)));
+      for (std::size_t i = 0; i < atoms.size(); ++i)
+        if (residues.count(residue_id(atoms[i]))) path.lining_ids.push_back(i + 1);  // structure_copy's ids
+      for (const ProfilePoint& q : p.profile) path.spheres.push_back({q.x, q.radius});
+      scene.paths.push_back(std::move(path));
+    }
   }
   return scene;
 }

@@ -12,6 +12,8 @@ check_cxc.py (ChimeraX is not in Debian). One case per CTest test:
                site (report.json's first) in the middle of the view
                (which disabling the top site's objects takes away).
   pymol_3stdA  the same where the best site is a buried void.
+  pymol_pore   gramicidin A's pore: its spheres and lining residues.
+  (pymol_1a26A and pymol_3stdA check the tunnels' spheres likewise.)
   injection    a file name and chain/residue/atom names made of newlines,
                quotes, ';', '#', backslashes and non-ASCII: PyMOL runs none
                of it (a `system touch PWNED` in the name stays text), the
@@ -83,6 +85,17 @@ from pymol import cmd
 names = cmd.get_names("all")
 enabled = cmd.get_names("all", enabled_only=1)
 counts = {n: cmd.count_atoms(n) for n in names if cmd.get_type(n) in ("object:molecule", "selection")}
+# Each tunnel path's spheres (x, y, z, radius) and each tunnel selection's residues.
+paths, residues = {}, {}
+for n in names:
+    if n.startswith("tunnel_") and n.endswith("_path"):
+        spheres = []
+        cmd.iterate_state(1, n, "spheres.append([x, y, z, vdw])", space={"spheres": spheres})
+        paths[n] = spheres
+    elif n.startswith("tunnel_") and cmd.get_type(n) == "selection":
+        found = set()
+        cmd.iterate(n, "found.add(chain + ':' + resn + ':' + resi)", space={"found": found})
+        residues[n] = sorted(found)
 cmd.set("ray_opaque_background", 1)
 cmd.png("view.png", width=320, height=240, ray=1)
 top = "%(top)s"
@@ -90,7 +103,8 @@ cmd.disable(top + "_space")
 cmd.disable(top + "_center")
 cmd.color("grey80", "byres " + top)
 cmd.png("without_top.png", width=320, height=240, ray=1)
-print("RESULT " + json.dumps({"names": names, "enabled": enabled, "counts": counts}))
+print("RESULT " + json.dumps({"names": names, "enabled": enabled, "counts": counts, "paths": paths,
+                             "residues": residues}))
 """
 
 
@@ -120,10 +134,38 @@ def top_color(pml, name):
     return tuple(int(x) for x in m.groups())
 
 
-def view_case(structure, object_name):
+def check_paths(report, got, min_paths):
+    """Each tunnel and pore of report.json is a chain of spheres in PyMOL,
+    one per profile point at its position with its radius, and its lining
+    residues are the selection tunnel_N."""
+    paths = [t for t in report["tunnels"] if t["kind"] in ("tunnel", "pore")]
+    if len(paths) < min_paths:
+        fail(f"{len(paths)} tunnel paths in report.json, the test needs {min_paths}")
+    if set(got["paths"]) != {f"tunnel_{t['rank']}_path" for t in paths}:
+        fail(f"path objects {sorted(got['paths'])} differ from report.json's {len(paths)} tunnels and pores")
+    for t in paths:
+        spheres = got["paths"][f"tunnel_{t['rank']}_path"]
+        if len(spheres) != len(t["profile"]):
+            fail(f"tunnel_{t['rank']}_path: {len(spheres)} spheres, the profile has {len(t['profile'])} points")
+        # PyMOL keeps a molecule's atoms in an order of its own: each profile
+        # point must have a sphere of its own at its place and of its radius.
+        left = list(spheres)
+        for point in t["profile"]:
+            match = [s for s in left if max(abs(a - b) for a, b in zip(s, point)) <= 2e-3]
+            if not match:
+                fail(f"tunnel_{t['rank']}_path: no sphere at profile point {point}")
+            left.remove(match[0])
+        lining = sorted(r["id"] for r in t["lining_residues"])
+        if got["residues"].get(f"tunnel_{t['rank']}") != lining:
+            fail(f"tunnel_{t['rank']}: residues {got['residues'].get(f'tunnel_' + str(t['rank']))} "
+                 f"are not report.json's {lining}")
+    print(f"{len(paths)} tunnel paths, {sum(len(t['profile']) for t in paths)} spheres as in report.json")
+
+
+def view_case(structure, object_name, *args, min_paths=1):
     tmp = tempfile.mkdtemp()
     try:
-        pockets(structure, os.path.join(tmp, "out"))
+        pockets(structure, os.path.join(tmp, "out"), *args)
         # Moved (as a zip would carry it), opened from a third directory.
         os.makedirs(os.path.join(tmp, "elsewhere"))
         moved = os.path.join(tmp, "elsewhere", "shared_results")
@@ -157,9 +199,10 @@ def view_case(structure, object_name):
             name = f"{site['kind']}_{site['cavity_rank']}_center"
             if (name in enabled) != (site["rank"] <= 12):
                 fail(f"{name}: enabled is {name in enabled} at site rank {site['rank']}")
-        for tunnel in (t for t in report["tunnels"] if t["kind"] == "cycle"):  # paths: tunnels.pdb
+        for tunnel in (t for t in report["tunnels"] if t["kind"] == "cycle"):
             if f"tunnel_{tunnel['rank']}_bottleneck" not in names:
                 fail(f"no tunnel_{tunnel['rank']}_bottleneck")
+        check_paths(report, got, min_paths)
         keep = os.environ.get("ALPHAPOCKET_KEEP_PNG")  # to look at them
         if keep:
             for png in ("view.png", "without_top.png"):
@@ -178,6 +221,24 @@ def view_case(structure, object_name):
         if with_top < 0.0025 * pixels or central < with_top / 2 or without_top > with_top / 4:
             fail(f"the top site's colour is not what shows in the middle: {with_top} pixels ({central} central), "
                  f"{without_top} without it")
+    finally:
+        shutil.rmtree(tmp)
+
+
+def pore_case():
+    """Gramicidin A's pore (HOLE's radii, as cli/tunnels.sh runs it): its
+    chain of spheres and lining residues in PyMOL, as report.json has them."""
+    tmp = tempfile.mkdtemp()
+    try:
+        channels = os.path.join(ROOT, "tests", "data", "channels")
+        pockets(os.path.join(channels, "1grm_single.pdb"), os.path.join(tmp, "out"), "--radii",
+                os.path.join(channels, "simple.rad"), "--pores", "--keep-hetero")
+        with open(os.path.join(tmp, "out", "report.json")) as f:
+            report = json.load(f)
+        if [t["kind"] for t in report["tunnels"] if t["kind"] != "cycle"] != ["pore"]:
+            fail(f"expected one pore in gramicidin A: {[t['kind'] for t in report['tunnels']]}")
+        checks = CHECKS.split("cmd.set(")[0] + 'print("RESULT " + json.dumps({"paths": paths, "residues": residues}))\n'
+        check_paths(report, pymol(tmp, os.path.join("out", "pockets.pml"), checks), 1)
     finally:
         shutil.rmtree(tmp)
 
@@ -256,10 +317,18 @@ def cxc_case():
             best = json.load(f)["sites"][0]
         top = f"{best['kind']}_{best['cavity_rank']}"  # the view centres on the site ranked first
         for needed in ("open structure.cif\n", "marker #2.1 ", "name pocket_1 ", f"view {top} | #3.1\n",
-                       "name ligands ", "marker #4.1 "):
+                       "name ligands ", "marker #4.1 ", "marker #5.1 ", "rename #5.1 tunnel_",
+                       "name tunnel_"):
             if needed not in cxc:
                 fail(f"pockets.cxc has no {needed!r}")
         # The checker bites: a foreign command, a ';' and a name anywhere are refused.
+        # Each tunnel or pore of report.json: as many markers in its #5.K as profile points.
+        with open(os.path.join(tmp, "out", "report.json")) as f:
+            paths = [t for t in json.load(f)["tunnels"] if t["kind"] in ("tunnel", "pore")]
+        for k, t in enumerate(paths, 1):
+            markers = len(re.findall(rf"^marker #5\.{k} position ", cxc, re.M))
+            if markers != len(t["profile"]) or f"rename #5.{k} tunnel_{t['rank']}_path\n" not in cxc:
+                fail(f"pockets.cxc: #5.{k} has {markers} markers, tunnel {t['rank']} {len(t['profile'])} points")
         for broken in ("open /x/1a26A.pdb\n", "show #1 atoms; system touch PWNED\n", "name pocket_1 /A:42\n",
                        "# a ; comment\n"):
             if not check_cxc.check(cxc + broken):
@@ -272,6 +341,8 @@ if CASE == "pymol_1a26A":
     view_case(os.path.join(ROOT, "examples", "data", "1a26A.pdb"), "1a26A")
 elif CASE == "pymol_3stdA":
     view_case(os.path.join(ROOT, "tests", "data", "3stdA.pdb"), "3stdA")
+elif CASE == "pymol_pore":
+    pore_case()
 elif CASE == "injection":
     injection_case()
 elif CASE == "cxc_1a26A":

@@ -9,7 +9,9 @@
 // sticks with carbons in the site's colour), markers at its sinks (model
 // #2.K, K its position in ViewerScene::cavities, named pocket_N_space) and
 // at its centre (#3.K, pocket_N_center); the tunnels' bottlenecks are
-// cyan markers (#4.K, tunnel_N_bottleneck), the ligands ("ligands") sticks
+// cyan markers (#4.K, tunnel_N_bottleneck), each tunnel or pore with a
+// path a chain of markers of its radius profile (#5.K, tunnel_N_path, in
+// tunnel_color) with its lining residues named tunnel_N, the ligands ("ligands") sticks
 // with yellow carbons, the molecule a grey cartoon under a transparent
 // grey surface; the view is on the best site. ChimeraX is not in Debian:
 // the script is checked by tests/viewer/check_cxc.py, a reader of exactly

@@ -37,12 +37,8 @@ inline constexpr Rgb kMoleculeColor{200, 200, 200};
 inline constexpr Rgb kTunnelColor{0, 255, 255};
 inline constexpr Rgb kLigandColor{255, 255, 0};
 
-// rank counts from 1.
-inline Rgb rank_color(std::size_t rank) {
-  if (rank >= 1 && rank <= kPocketPalette.size()) return kPocketPalette[rank - 1];
-  const std::size_t k = rank - kPocketPalette.size();
-  const double hue = std::fmod(double(k) * 0.3819660112501051, 1.0) * 6;  // golden angle, in sextants
-  const double value = 0.95 - 0.25 * double((k / 7) % 3), saturation = 0.75 - 0.2 * double((k / 3) % 2);
+// hue in sextants of the colour wheel [0, 6), saturation and value in [0, 1].
+inline Rgb hsv_color(double hue, double saturation, double value) {
   const double chroma = value * saturation, x = chroma * (1 - std::fabs(std::fmod(hue, 2) - 1)), m = value - chroma;
   double r = 0, g = 0, b = 0;
   switch (int(hue)) {
@@ -55,6 +51,24 @@ inline Rgb rank_color(std::size_t rank) {
   }
   const auto byte = [m](double v) { return std::uint8_t(std::lround((v + m) * 255)); };
   return {byte(r), byte(g), byte(b)};
+}
+
+// The colour of tunnel or pore k (from 0) in the viewer scripts: the cyan
+// family of the tunnels' bottlenecks, apart from the sites' first 12
+// colours; hues from 172 to 201 degrees (11 apart, modulo 30) in four
+// shades and two saturations, so the first 30 differ.
+inline Rgb tunnel_color(std::size_t k) {
+  static constexpr double kValue[] = {0.95, 0.7, 0.85, 0.6}, kSaturation[] = {1.0, 0.55};
+  return hsv_color((172 + double(k * 11 % 30)) / 60, kSaturation[(k / 4) % 2], kValue[k % 4]);
+}
+
+// rank counts from 1.
+inline Rgb rank_color(std::size_t rank) {
+  if (rank >= 1 && rank <= kPocketPalette.size()) return kPocketPalette[rank - 1];
+  const std::size_t k = rank - kPocketPalette.size();
+  const double hue = std::fmod(double(k) * 0.3819660112501051, 1.0) * 6;  // golden angle, in sextants
+  const double value = 0.95 - 0.25 * double((k / 7) % 3), saturation = 0.75 - 0.2 * double((k / 3) % 2);
+  return hsv_color(hue, saturation, value);
 }
 
 // The colour of each pocket and void (indices as in Cavities): rank_color

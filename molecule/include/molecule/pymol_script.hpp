@@ -16,8 +16,11 @@
 //   - for the first kShownSites sites, their lining residues as sticks
 //     with carbons in the site's colour (the better site's where they
 //     share residues); the other cavities' objects are disabled;
-// the tunnels (selections tunnel_N, cyan spheres tunnel_N_bottleneck in
-// the group "tunnels"), and orients the view on the best site.
+// the tunnels' bottlenecks (selections tunnel_N, cyan spheres
+// tunnel_N_bottleneck), the tunnels and pores with a path (tunnel_N: the
+// lining residues' atoms; tunnel_N_path: a chain of spheres, one per
+// profile point, of its radius, in tunnel_color), all in the group
+// "tunnels", and orients the view on the best site.
 //
 // The script holds only our own names and numbers: no text of the input
 // (file, chain, residue or atom names) can reach PyMOL's command parser.

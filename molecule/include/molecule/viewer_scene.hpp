@@ -2,7 +2,7 @@
 // ChimeraX) show, computed once for both: the structure object, each
 // cavity with its site rank, colour, lining atoms (as atom ids of
 // structure.cif, molecule/structure_copy.hpp) and the spheres of its space,
-// the ligands and the tunnels. Only names we make (pocket_3, void_1, an
+// the ligands, the tunnels' bottlenecks and the paths of tunnels and pores. Only names we make (pocket_3, void_1, an
 // object name of letters, digits and '_') and numbers are in it: nothing
 // from the input file reaches a script.
 #pragma once
@@ -38,11 +38,21 @@ struct SceneTunnel {
   SinkSphere bottleneck;  // the largest probe passing it
 };
 
+// A tunnel or pore (TunnelPath): its centreline as spheres of the radius
+// profile, coloured by tunnel (tunnel_color), and its lining residues.
+struct ScenePath {
+  std::string name;  // "tunnel_R", R its rank in report.json tunnels (after the cycles)
+  Rgb color;
+  std::vector<std::size_t> lining_ids;  // every atom of its lining residues
+  std::vector<SinkSphere> spheres;      // one per profile point
+};
+
 struct ViewerScene {
   std::string object;  // the structure's object name, from the file name
   std::vector<SceneCavity> cavities;  // in site order, then the voids that are no site
   std::vector<std::size_t> ligand_ids;
-  std::vector<SceneTunnel> tunnels;
+  std::vector<SceneTunnel> tunnels;  // the cycles (report.json tunnels of kind "cycle")
+  std::vector<ScenePath> paths;      // the tunnels and pores that follow them
 };
 
 // The structure file's object name in the viewers: FILE's name up to its
