@@ -1,5 +1,6 @@
 // alphapocket batch INPUT... -o OUTDIR [-j N] [--list FILE] [--outputs LIST]
 //                  [--max-atoms N] [the options of pockets]
+// alphapocket batch INPUT... [--list FILE] --print-inputs
 //
 // Many structures, one per worker thread: each goes through the same
 // pipeline as `pockets` (molecule::analyse), writes the chosen outputs to
@@ -12,6 +13,7 @@
 // (apps/interrupt.hpp).
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -57,7 +59,9 @@ struct BatchOptions {
   std::string outputs = "report";
   std::size_t max_atoms = 2'000'000;
   molecule::AnalysisOptions analysis;
+  bool print_inputs = false;
 };
+
 
 // The structures named by the command line, sorted by id.
 std::vector<molecule::BatchInput> collect_inputs(const BatchOptions& opt) {
@@ -79,6 +83,19 @@ std::vector<molecule::BatchInput> collect_inputs(const BatchOptions& opt) {
   return inputs;
 }
 
+// --print-inputs: the structures as the run would see them, "id<TAB>path"
+// per line, sorted by id (what workflow/Snakefile chunks). A path with a
+// tab or line break cannot be a line of a list: an error.
+int print_inputs(const BatchOptions& opt) {
+  for (const molecule::BatchInput& in : collect_inputs(opt)) {
+    if (in.path.find_first_of("\t\r\n") != std::string::npos)
+      throw std::runtime_error(in.path + ": a path with a tab or line break cannot be listed");
+    std::printf("%s\t%s\n", in.id.c_str(), in.path.c_str());
+  }
+  flush_stdout();
+  return 0;
+}
+
 // Everything that changes a structure's results or outputs.
 nlohmann::ordered_json parameters(const BatchOptions& opt) {
   const molecule::AnalysisOptions& a = opt.analysis;
@@ -89,6 +106,8 @@ nlohmann::ordered_json parameters(const BatchOptions& opt) {
           {"keep_hydrogens", a.structure.keep_hydrogens},
           {"keep_waters", a.structure.keep_waters},
           {"keep_hetero", a.structure.keep_hetero},
+          {"keep_hetero_codes", a.structure.keep_hetero_codes},
+          {"keep_cofactors", a.structure.keep_cofactors},
           {"max_atoms", a.max_atoms},
           {"outputs", opt.outputs},
           {"mesh", a.mesh_format}};
@@ -266,9 +285,12 @@ Subcommand add_batch_command(CLI::App& app) {
   sub->add_option("--list", opt->lists,
                   "File listing one path per line (# comments; a P2Rank .ds dataset: first column, relative to "
                   "its directory); may be repeated");
-  sub->add_option("-o,--output-dir", opt->output_dir, "Directory for the tables and the structures' outputs")
-      ->required()
+  sub->add_option("-o,--output-dir", opt->output_dir,
+                  "Directory for the tables and the structures' outputs (required unless --print-inputs)")
       ->check(output_directory_name());
+  sub->add_flag("--print-inputs", opt->print_inputs,
+                "Only print the structures the run would analyse, one 'id<TAB>path' line each, sorted by id (or "
+                "the error an input would stop the run with), and exit");
   sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
   sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes,tunnels")
@@ -276,11 +298,16 @@ Subcommand add_batch_command(CLI::App& app) {
   sub->add_option("--max-atoms", opt->max_atoms, "Structures with more atoms (after the selection) are skipped")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  // -o is required unless --print-inputs: a wrong command line (exit 2) either way.
+  sub->parse_complete_callback([opt] {
+    if (!opt->print_inputs && opt->output_dir.empty()) throw CLI::RequiredError("-o,--output-dir");
+  });
   add_structure_options(*sub, opt->analysis.structure, opt->analysis.cavities.probe);
   add_cavity_options(*sub, opt->analysis);
   return {sub, [opt] {
             if (opt->inputs.empty() && opt->lists.empty())
               throw std::runtime_error("batch: no INPUT and no --list (see --help)");
+            if (opt->print_inputs) return print_inputs(*opt);
             return run_batch(*opt);
           }};
 }

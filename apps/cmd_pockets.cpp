@@ -7,6 +7,7 @@
 // <name>_pockets in the current directory):
 //   report.json   everything, schema in README.md
 //   pockets.csv   one row per pocket
+//   sites.csv     one row per binding site (pockets and voids)
 //   pockets.pml   PyMOL script        pockets.pdb  centres as pseudo-atoms
 //   meshes/       one mesh per pocket and void, and the molecule's surface
 // then prints a one-screen summary of the best binding sites (pockets and
@@ -105,7 +106,7 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
                   residue_list(structure.atoms, c.lining_atoms, kSummaryWidth - prefix).c_str());
     }
     if (sites.size() > kSummaryRows)
-      std::printf("(top %zu of %zu sites; all in %s/report.json, pockets in pockets.csv)\n", kSummaryRows,
+      std::printf("(top %zu of %zu sites; all in %s/report.json, sites.csv)\n", kSummaryRows,
                   sites.size(), outdir.c_str());
   }
   if (!cavities.tunnels.empty()) {
@@ -132,6 +133,52 @@ void print_paths(const molecule::Analysis& a) {
       line("widest pore", p);
     }
   }
+}
+
+// One line per hetero group (report.json ligands[]), the ones in a site
+// first by site rank, then the others in file order; at most kSummaryRows.
+void print_ligands(const molecule::Analysis& a) {
+  using json = nlohmann::ordered_json;
+  const json& ligands = a.report.at("ligands");
+  const json& sites = a.report.at("sites");
+  std::vector<const json*> order;
+  for (const json& l : ligands) order.push_back(&l);
+  std::stable_sort(order.begin(), order.end(), [](const json* x, const json* y) {
+    const auto key = [](const json* l) { return l->at("site").is_null() ? std::size_t(-1) : l->at("site").get<std::size_t>(); };
+    return key(x) < key(y);
+  });
+  const auto site_name = [&](const json& rank) {
+    const json& s = sites.at(rank.get<std::size_t>() - 1);
+    return "site " + rank.dump() + " (" + s.at("kind").get<std::string>() + " " + s.at("cavity_rank").dump() + ")";
+  };
+  // "; 14 in site 9": the other sites holding some of it.
+  const auto elsewhere = [](const json& l) {
+    std::string more;
+    for (const json& h : l.at("in_sites"))
+      if (h.at("site") != l.at("site")) more += "; " + h.at("atoms").dump() + " in site " + h.at("site").dump();
+    return more;
+  };
+  if (!order.empty()) std::printf("\n");
+  for (std::size_t i = 0; i < std::min(order.size(), kSummaryRows); ++i) {
+    const json& l = *order[i];
+    const std::string name = l.at("name").get<std::string>() + " " + l.at("chain").get<std::string>() + ":" +
+                             l.at("number").dump() + l.at("insertion_code").get<std::string>();
+    std::string where;
+    if (l.at("kept") == true)
+      where = "kept as protein, " + (l.at("site").is_null() ? std::string("lines no site") : "lines " + site_name(l.at("site")));
+    else if (!l.at("site").is_null())
+      where = "in " + site_name(l.at("site")) + ", " + fmt::format("{:.1f}", l.at("distance").get<double>()) + " A: " +
+              l.at("atoms_in_site").dump() + " of " + l.at("heavy_atoms").dump() + " heavy atoms inside its space" +
+              elsewhere(l);
+    else if (!l.at("nearest_site").is_null())
+      where = "in no site: nearest " + site_name(l.at("nearest_site")) + " at " +
+              fmt::format("{:.1f}", l.at("distance").get<double>()) + " A";
+    else
+      where = "in no site";
+    std::printf("ligand %s %s\n", name.c_str(), where.c_str());
+  }
+  if (order.size() > kSummaryRows)
+    std::printf("(%zu of %zu hetero groups; all in report.json ligands)\n", kSummaryRows, order.size());
 }
 
 // Input the cavity search was not made for, said plainly: a C-alpha trace
@@ -204,6 +251,7 @@ int run_pockets(const PocketsOptions& opt) {
     std::puts(analysis.report->json.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print_summary(opt, outdir, analysis.structure, analysis.search.cavities);
+    print_ligands(analysis);
     print_paths(analysis);
   }
   flush_stdout();
@@ -218,7 +266,7 @@ Subcommand add_pockets_command(CLI::App& app) {
       "pockets", "Find the pockets, voids and tunnels of a structure; write report, CSV, PyMOL script, PDB and meshes");
   sub->footer(
       "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
-      "ProtOr radii. OUTDIR gets report.json, pockets.csv, pockets.pml (PyMOL), pockets.cxc (ChimeraX), "
+      "ProtOr radii. OUTDIR gets report.json, pockets.csv, sites.csv, pockets.pml (PyMOL), pockets.cxc (ChimeraX), "
       "structure.cif, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb and meshes/; see README.md for "
       "their contents. -v logs every site, -vv with its lining residues.");
   add_input_options(*sub, opt->input);

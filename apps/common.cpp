@@ -1,5 +1,7 @@
 #include "common.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +19,25 @@
 #include "molecule/radii.hpp"
 
 namespace alphapocket {
+namespace {
+
+// A PDB chemical component code (1-5 letters and digits), upper-cased; or
+// "all" (the flag without a value).
+CLI::Validator hetero_code() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text == "all") return {};
+        const bool ok = !text.empty() && text.size() <= 5 &&
+                        std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)); });
+        if (!ok) return "'" + text + "' is not a residue code (1-5 letters and digits, e.g. ZN,HEM)";
+        for (char& c : text) c = char(std::toupper(static_cast<unsigned char>(c)));
+        return {};
+      },
+      "");
+}
+
+}  // namespace
+
 void add_input_options(CLI::App& sub, InputOptions& opt) {
   sub.add_option("FILE", opt.file,
                  "Point file (x y z per line; x y z r with --weighted) or structure file (.pdb .ent .cif "
@@ -52,9 +73,19 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
       sub.add_flag("--keep-hydrogens", selection.keep_hydrogens, "Keep hydrogen atoms (dropped by default)")
           ->group(group),
       sub.add_flag("--keep-waters", selection.keep_waters, "Keep waters (dropped by default)")->group(group),
-      sub.add_flag("--keep-hetero", selection.keep_hetero,
-                   "Keep hetero groups: ligands, ions (dropped by default; modified residues of a polymer are "
-                   "always kept)")
+      // A flag that takes its optional value after '=' only: FILE after it stays FILE.
+      sub.add_flag("--keep-hetero{all}", selection.keep_hetero_codes,
+                   "Keep hetero groups as part of the protein: all, or with =CODES those named, e.g. "
+                   "--keep-hetero=ZN,HEM (dropped by default and reported as ligands with their site; modified "
+                   "residues of a polymer are always kept)")
+          ->type_name("[=CODES]")
+          ->delimiter(',')
+          ->transform(hetero_code())
+          ->each([&selection](const std::string& code) { selection.keep_hetero |= code == "all"; })
+          ->group(group),
+      sub.add_flag("--keep-cofactors", selection.keep_cofactors,
+                   "Keep common metal ions and cofactors (ZN, MG, CA, FE, HEM, FAD, NAD, SF4, ...: README) as part "
+                   "of the protein; other hetero groups are still dropped")
           ->group(group),
       sub.add_option("--min-plddt", selection.min_plddt,
                      "Predicted models (AlphaFold): leave out residues with a lower pLDDT, 0-100 (default: keep all)")

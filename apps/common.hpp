@@ -42,7 +42,7 @@ struct InputOptions {
 void add_input_options(CLI::App& sub, InputOptions& opt);
 
 // Adds --probe, --model, --chains, --keep-hydrogens, --keep-waters and
-// --keep-hetero (help group "Structure files"); returns them.
+// --keep-hetero[=CODES], --keep-cofactors (help group "Structure files"); returns them.
 std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::StructureOptions& selection,
                                                       double& probe);
 

@@ -187,7 +187,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   CHECK(keys == std::vector<std::string>{"alphapocket", "input", "parameters", "molecule", "pockets", "voids",
-                                         "sites", "tunnels"});
+                                         "sites", "ligands", "tunnels"});
   CHECK(j["alphapocket"] == "test");
 
   const json& in = j["input"];
@@ -233,7 +233,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
     CHECK(site["kind"] == (cav.sites[i].is_void ? "void" : "pocket"));
     CHECK(site["cavity_rank"] == cav.sites[i].index + 1);
     const json& cavity = j[cav.sites[i].is_void ? "voids" : "pockets"].at(cav.sites[i].index);
-    for (const char* key : {"score", "sa_volume", "center"}) CHECK(site[key] == cavity[key]);
+    for (const char* key : {"score", "sa_volume", "center", "lining_residues"}) CHECK(site[key] == cavity[key]);
   }
 
   REQUIRE(j["tunnels"].size() == cav.tunnels.size());
@@ -339,6 +339,26 @@ TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the oth
     const molecule::Rgb c = rank_color(rank);
     INFO(rank);
     CHECK(seen.insert({c.r, c.g, c.b}).second);
+  }
+}
+
+TEST_CASE("pockets outputs: tunnel colours are distinct cyans, apart from the shown sites'", "[pocket_outputs]") {
+  std::set<std::tuple<int, int, int>> seen;
+  for (std::size_t rank = 1; rank <= 12; ++rank) {
+    const molecule::Rgb c = molecule::rank_color(rank);
+    seen.insert({c.r, c.g, c.b});
+  }
+  for (std::size_t k = 0; k < 30; ++k) {
+    const molecule::Rgb c = molecule::tunnel_color(k);
+    INFO("tunnel " << k << ": " << int(c.r) << " " << int(c.g) << " " << int(c.b));
+    CHECK(seen.insert({c.r, c.g, c.b}).second);
+    // Hue between 170 and 205 degrees: green and blue well above red.
+    const int hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b});
+    REQUIRE(hi > lo);
+    const double hue = 60 * (4 + double(c.r - c.g) / (hi - lo));  // blue largest
+    const double hue_g = 60 * (2 + double(c.b - c.r) / (hi - lo));  // green largest
+    CHECK((c.b >= c.g ? hue : hue_g) >= 170);
+    CHECK((c.b >= c.g ? hue : hue_g) <= 205);
   }
 }
 

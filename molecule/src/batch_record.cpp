@@ -15,11 +15,12 @@ json value_or_null(const json& object, const char* key) {
   return it == object.end() ? json(nullptr) : *it;
 }
 
-std::string residue_ids(const json& lining_residues) {
+// Strings, or objects' "id"s, as one space-separated list.
+std::string words(const json& items) {
   std::string out;
-  for (const json& r : lining_residues) {
+  for (const json& r : items) {
     if (!out.empty()) out += ' ';
-    out += r.at("id").get<std::string>();
+    out += (r.is_string() ? r : r.at("id")).get<std::string>();
   }
   return out;
 }
@@ -41,14 +42,15 @@ json report_rows(const json& report) {
                      c.at("sa_area"), c.at("ms_area"), c.at("depth"), c.at("mouths"), c.at("mouth_area"),
                      c.at("buriedness"), c.at("burial_atoms"), c.at("max_probe_radius"), center[0], center[1],
                      center[2], value_or_null(s, "mean_plddt"), c.at("lining_residues").size(),
-                     residue_ids(c.at("lining_residues"))});
+                     words(c.at("lining_residues")),
+                     s.at("ligands").empty() ? json(nullptr) : json(words(s.at("ligands")))});
   }
   json tunnels = json::array();
   for (const json& t : report.at("tunnels")) {
     const json& center = t.at("bottleneck_center");
     tunnels.push_back({t.at("rank"), t.at("kind"), t.at("bottleneck_radius"), center[0], center[1], center[2],
                        t.at("length"), value_or_null(t, "birth_alpha_sq"), value_or_null(t, "death_alpha_sq"),
-                       residue_ids(t.at("lining_residues"))});
+                       words(t.at("lining_residues"))});
   }
   return {{"structure", std::move(structure)}, {"sites", std::move(sites)}, {"tunnels", std::move(tunnels)}};
 }

@@ -42,7 +42,7 @@ const Table kSites{"sites",
                     {"probability", R}, {"sa_volume", R}, {"ms_volume", R}, {"sa_area", R}, {"ms_area", R}, {"depth", R},
                     {"mouths", I}, {"mouth_area", R}, {"buriedness", R}, {"burial_atoms", I},
                     {"max_probe_radius", R}, {"center_x", R}, {"center_y", R}, {"center_z", R}, {"mean_plddt", R},
-                    {"lining_residues", I}, {"residues", T}},
+                    {"lining_residues", I}, {"residues", T}, {"ligands", T}},
                    1};
 const Table kTunnels{"tunnels",
                      {{"structure_id", T}, {"tunnel_rank", I}, {"kind", T}, {"bottleneck_radius", R}, {"center_x", R},
@@ -146,6 +146,22 @@ std::string read_line_at(std::ifstream& in, std::uint64_t offset, const std::str
 }
 
 }  // namespace
+
+std::string sites_csv(const std::string& structure_id, const json& report) {
+  std::string out;
+  for (const Column& c : kSites.columns) {
+    if (!out.empty()) out += ',';
+    out += c.name;
+  }
+  out += '\n';
+  const json rows = report_rows(report);
+  for (const json& row : rows.at("sites")) {
+    out += csv_field(structure_id);
+    for (const json& v : row) out += ',' + csv_value(v, false);
+    out += '\n';
+  }
+  return out;
+}
 
 RecordAppender::RecordAppender(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "a+b");

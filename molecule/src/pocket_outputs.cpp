@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include "alpha/error.hpp"
+#include "molecule/batch_inputs.hpp"
+#include "molecule/batch_tables.hpp"
 #include "molecule/staged_directory.hpp"
 #include "molecule/cavity_mesh.hpp"
 #include "molecule/mesh_export.hpp"
@@ -46,7 +48,7 @@ OutputSelection parse_output_selection(const std::string& list) {
 
 namespace {
 
-constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "pockets.pml", "pockets.cxc", "structure.cif",
+constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "sites.csv", "pockets.pml", "pockets.cxc", "structure.cif",
                                      "pockets.pdb", "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"};
 
 bool is_our_mesh(const std::string& name) {
@@ -158,8 +160,11 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   // Invalid UTF-8 in the input's names is replaced, not an error.
   if (selection_.report)
     files.emplace_back("report.json",
-                       report_file_text(report));
-  if (selection_.csv) files.emplace_back("pockets.csv", pockets_csv(run));
+                      report_file_text(report));
+  if (selection_.csv) {
+    files.emplace_back("pockets.csv", pockets_csv(run));
+    files.emplace_back("sites.csv", sites_csv(structure_id(run.file), report));
+  }
   if (selection_.pml) {
     StructureCopy copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " +
                                                             run.file + ", and its ligands");

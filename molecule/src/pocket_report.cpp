@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "alpha/error.hpp"
+#include "molecule/ligand_sites.hpp"
 
 namespace molecule {
 namespace {
@@ -105,22 +106,64 @@ json cavity_list(const PocketRun& run, const std::vector<Cavity>& list, const st
   return out;
 }
 
+std::string ligand_id(const HeteroGroup& g) {
+  return g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num) + icode_text(g.icode);
+}
+
+json holding(const LigandSite& l) {
+  json out = json::array();
+  for (const auto& [rank, atoms] : l.holding) out.push_back({{"site", rank}, {"atoms", atoms}});
+  return out;
+}
+
+// Every hetero group with the site that holds it (molecule/ligand_sites.hpp).
+json ligand_list(const PocketRun& run, const std::vector<LigandSite>& where) {
+  json out = json::array();
+  for (const LigandSite& l : where) {
+    const HeteroGroup& g = run.structure->hetero_groups.at(l.group);
+    const auto rank = [](std::size_t r) { return r ? json(r) : json(nullptr); };
+    out.push_back({{"id", ligand_id(g)},
+                   {"name", g.residue_name},
+                   {"chain", g.chain},
+                   {"number", g.seq_num},
+                   {"insertion_code", icode_text(g.icode)},
+                   {"heavy_atoms", g.atoms.size()},
+                   {"kept", g.kept},
+                   {"site", rank(l.site)},
+                   {"nearest_site", g.kept ? json(nullptr) : rank(l.nearest_site)},
+                   {"distance", g.kept || !l.nearest_site ? json(nullptr) : json(length(l.distance))},
+                   {"atoms_in_site", l.atoms_in_site},
+                   {"in_sites", holding(l)}});
+  }
+  return out;
+}
+
 // The binding-site ranking: which pocket or void each site is (its rank in
-// that list), with the score and centre repeated for scripts.
-json site_list(const PocketRun& run) {
+// that list), with the score, centre and lining residues repeated for
+// scripts, and the ids of the hetero groups it holds.
+json site_list(const PocketRun& run, const json& ligands) {
   const Cavities& cavities = run.search->cavities;
   json out = json::array();
   std::size_t rank = 0;
   for (const Site& s : cavities.sites) {
     const Cavity& c = cavities.cavity(s);
-    out.push_back({{"rank", ++rank},
+    json held = json::array();
+    ++rank;
+    for (const json& l : ligands) {
+      bool in = l["site"] == rank;
+      for (const json& h : l["in_sites"]) in = in || h["site"] == rank;
+      if (in) held.push_back(l["id"]);
+    }
+    out.push_back({{"rank", rank},
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},
                    {"score", score(c.score)},
                    {"probability", probability(c.probability)},
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(c.center)},
-                   {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)}});
+                   {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
+                   {"lining_residues", lining_residues(run.structure->atoms, c.lining_atoms)},
+                   {"ligands", std::move(held)}});
   }
   return out;
 }
@@ -270,6 +313,7 @@ json pocket_report(const PocketRun& run) {
                    {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))},
                    {"tunnel_paths", num_paths(run)}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
+  const json ligands = ligand_list(run, ligand_sites(*run.structure, *run.search));
   return {
       {"alphapocket", run.version},
       {"input", std::move(input)},
@@ -277,7 +321,8 @@ json pocket_report(const PocketRun& run) {
       {"molecule", std::move(molecule)},
       {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
       {"voids", cavity_list(run, run.search->cavities.voids, "void")},
-      {"sites", site_list(run)},
+      {"sites", site_list(run, ligands)},
+      {"ligands", ligands},
       {"tunnels", tunnel_list(run)},
   };
 }

@@ -666,6 +666,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
         const std::vector<bool> keep = altloc_keep(res, chosen);
         const bool water = is_water(res);
         const bool hetero = !water && is_ligand(res, chain_has_atom_records);
+        const bool keep_group = hetero && keeps_hetero(options, res.name);
         const bool low_plddt = by_plddt && mean_b_factor(res) < options.min_plddt;
         HeteroGroup ligand{res.name, chain.name, seq_num(res), no_blank(res.seqid.icode), {}};
         for (std::size_t i = 0; i < res.atoms.size(); ++i) {
@@ -678,7 +679,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
           bool kept = false;
           if (water && !options.keep_waters)
             ++report.dropped_water;
-          else if (hetero && !options.keep_hetero)
+          else if (hetero && !keep_group)
             ++report.dropped_hetero;
           else if (is_hydrogen(a) && !options.keep_hydrogens)
             ++report.dropped_hydrogen;
@@ -774,6 +775,13 @@ Structure read_structure(const std::string& path, const StructureOptions& option
     throw StructureError(e.what(), e.kind());
   }
   return parse_structure(text, path, options);
+}
+
+bool keeps_hetero(const StructureOptions& options, const std::string& residue_name) {
+  const auto named = [&](const auto& codes) {
+    return std::find(std::begin(codes), std::end(codes), residue_name) != std::end(codes);
+  };
+  return options.keep_hetero || named(options.keep_hetero_codes) || (options.keep_cofactors && named(kCofactors));
 }
 
 bool is_structure_file(std::string_view path) {

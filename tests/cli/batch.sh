@@ -179,7 +179,29 @@ case "$case_name" in
     # A re-run with fewer outputs removes the others.
     run -q batch "$data/1ytjA.pdb" -o "$tmp/o" --outputs csv
     expect_success
-    [[ $(ls "$tmp/o/1ytjA") == pockets.csv ]] || fail "1ytjA/: $(ls "$tmp/o/1ytjA")"
+    [[ $(ls "$tmp/o/1ytjA" | tr '\n' ' ') == "pockets.csv sites.csv " ]] || fail "1ytjA/: $(ls "$tmp/o/1ytjA")"
+    ;;
+  sites_tables)
+    # The run's sites.csv is its structures' sites.csv joined (each
+    # structure's from its own csv output), ligands column included.
+    mkdir "$tmp/in"
+    cp "$pdb" "$data/3stdA.pdb" "$data/1fbl.pdb" "$tmp/in/"
+    run -q batch "$tmp/in" -o "$tmp/o" --outputs csv -j 2
+    expect_success
+    { head -n 1 "$tmp/o/1a26A/sites.csv"
+      for id in 1a26A 1fbl 3stdA; do tail -n +2 "$tmp/o/$id/sites.csv"; done; } >"$tmp/joined"
+    cmp -s "$tmp/joined" "$tmp/o/sites.csv" || fail "sites.csv is not the structures' sites.csv joined"
+    grep -q '^1a26A,[0-9]*,pocket,.*,A:CNA:200$' "$tmp/o/sites.csv" || fail "no site of 1a26A holds CNA"
+    grep -q '^3stdA,1,void,.*,A:MQ0:503$' "$tmp/o/sites.csv" || fail "3stdA's void does not hold MQ0"
+    [[ $(sqlite3 "$tmp/o/alphapocket.sqlite" "SELECT COUNT(*) FROM sites WHERE ligands LIKE '%A:CNA:200%'") -ge 1 ]] ||
+      fail "sqlite: no site with CNA"
+    # --print-inputs: the same structures and ids, without running them.
+    run batch "$tmp/in" --print-inputs
+    expect_success
+    printf '1a26A\t%s\n1fbl\t%s\n3stdA\t%s\n' "$tmp/in/1a26A.pdb" "$tmp/in/1fbl.pdb" "$tmp/in/3stdA.pdb" >"$tmp/want"
+    cmp -s "$tmp/want" "$tmp/out" || fail "--print-inputs: $(cat "$tmp/out")"
+    run batch "$tmp/in" "$pdb" --print-inputs
+    expect_error "two inputs with the structure id '1a26A'"
     ;;
   resume)
     # A re-run skips what is done (same content, parameters, version) and

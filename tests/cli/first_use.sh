@@ -71,6 +71,79 @@ case "$case_name" in
     expect_success
     grep -q "^\[warning\] $data/1bna.pdb: only nucleic acids: " "$tmp/err" || fail "no warning on DNA alone"
     ;;
+  sites_csv)
+    # sites.csv: every site, voids too (3stdA's best site is a void), read
+    # back against report.json.
+    run pockets "$data/3stdA.pdb" -o "$tmp/o"
+    expect_success
+    python3 "$root/tests/cli/check_sites_csv.py" "$tmp/o" 3stdA >"$tmp/out" 2>"$tmp/err" || fail "sites.csv"
+    ;;
+  ligands)
+    # The dropped ligand named with its site, in the summary and the report.
+    run pockets "$pdb" -o "$tmp/o"
+    expect_success
+    # 1A26's CNA lies across three pockets (sites 7, 9 and 11 by the
+    # geometric score; its atoms inside their tetrahedra, which
+    # tests/test_ligand_sites.cpp checks by brute force): its site is the
+    # best-ranked of them, the others are named too.
+    python3 - "$tmp/o/report.json" "$tmp/o/sites.csv" "$tmp/out" <<'PY' || fail "report.json ligands"
+import csv, json, sys
+report = json.load(open(sys.argv[1]))
+(cna,) = report["ligands"]
+assert cna["id"] == "A:CNA:200" and cna["kept"] is False and cna["heavy_atoms"] == 27, cna
+held = [(h["site"], h["atoms"]) for h in cna["in_sites"]]
+assert sorted(a for _, a in held) == [3, 4, 14], held
+assert cna["site"] == held[0][0] and cna["distance"] == 0 and cna["atoms_in_site"] == held[0][1], cna
+holding = {site for site, _ in held}
+for s in report["sites"]:
+    assert s["ligands"] == (["A:CNA:200"] if s["rank"] in holding else []), s
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert [r["ligands"] for r in rows] == [("A:CNA:200" if int(r["site_rank"]) in holding else "") for r in rows]
+site = report["sites"][cna["site"] - 1]
+line = (f"ligand CNA A:200 in site {cna['site']} ({site['kind']} {site['cavity_rank']}), 0.0 A: "
+        f"{held[0][1]} of 27 heavy atoms inside its space" + "".join(f"; {a} in site {r}" for r, a in held[1:]))
+assert line in open(sys.argv[3]).read().splitlines(), line
+PY
+    ;;
+  keep_hetero_codes)
+    # --keep-hetero=CODES keeps those groups as protein; the others stay ligands.
+    run pockets "$data/1fbl.pdb" -o "$tmp/o" --keep-hetero=zn,HTA
+    expect_success
+    grep -q '^ligand HTA A:900 kept as protein, ' "$tmp/out" || fail "HTA not kept"
+    grep -q '^ligand ZN A:997 kept as protein, ' "$tmp/out" || fail "ZN not kept"
+    grep -qE '^ligand CA A:993 in ' "$tmp/out" || fail "CA not a dropped ligand"
+    python3 - "$tmp/o/report.json" <<'PY' || fail "report.json"
+import json, sys
+r = json.load(open(sys.argv[1]))
+kept = {l["name"] for l in r["ligands"] if l["kept"]}
+assert kept == {"ZN", "HTA"}, kept
+assert r["input"]["atoms_dropped"]["hetero"] == 4, r["input"]["atoms_dropped"]
+assert all(l["distance"] is None for l in r["ligands"] if l["kept"])
+PY
+    # Codes are checked: a FILE after the flag stays FILE.
+    run pockets --keep-hetero "$data/1fbl.pdb" -o "$tmp/o2"
+    expect_success
+    grep -q '^ligand HTA A:900 kept as protein' "$tmp/out" || fail "--keep-hetero alone did not keep all"
+    run pockets "$data/1fbl.pdb" -o "$tmp/o3" --keep-hetero=Z.N
+    expect_error "--keep-hetero" "'Z.N' is not a residue code"
+    ;;
+  keep_cofactors)
+    # The metals are cofactors: kept; the inhibitor HTA is a ligand in a site.
+    run pockets "$data/1fbl.pdb" -o "$tmp/o" --keep-cofactors
+    expect_success
+    grep -qE '^ligand HTA A:900 in site [0-9]+ \((pocket|void) [0-9]+\), [0-9.]+ A: ' "$tmp/out" ||
+      fail "HTA not placed in a site"
+    python3 - "$tmp/o/report.json" <<'PY' || fail "report.json"
+import json, sys
+r = json.load(open(sys.argv[1]))
+kept = sorted(l["name"] for l in r["ligands"] if l["kept"])
+assert kept == ["CA", "CA", "CA", "CA", "ZN", "ZN"], kept
+(hta,) = [l for l in r["ligands"] if not l["kept"]]
+assert hta["site"] is not None and hta["distance"] <= 4, hta
+# The zinc of the active site lines the inhibitor's site.
+assert any(l["name"] == "ZN" and l["site"] == hta["site"] for l in r["ligands"]), r["ligands"]
+PY
+    ;;
   *)
     echo "unknown case $case_name" >&2
     exit 2

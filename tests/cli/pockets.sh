@@ -59,7 +59,7 @@ case "$case_name" in
     grep -qF '"structure.cif"), "1a26A")' 1a26A_pockets/pockets.pml || fail "pockets.pml does not load structure.cif"
     grep -qx 'open structure.cif' 1a26A_pockets/pockets.cxc || fail "pockets.cxc does not open structure.cif"
     ! grep -qF "$tmp" 1a26A_pockets/pockets.pml 1a26A_pockets/pockets.cxc || fail "a script names an absolute path"
-    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 10 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 11 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
     ;;
   json)
     # --json: the report on one line, the same as report.json.

@@ -86,7 +86,7 @@ plan)
   # jobs of 1,000 (the default chunk size), not 200,000.
   seq -f 'afdb/AF-%07.0f-F1-model_v4.cif.gz' 0 199999 >big.txt
   run_snakemake() { set +e; env -u USER snakemake -s "$root/workflow/Snakefile" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?; set -e; }
-  run_snakemake -n -q --cores 2 --config list=big.txt outdir=screen
+  run_snakemake -n -q --cores 2 --config list=big.txt outdir=screen alphapocket="$exe"
   [[ $rc -eq 0 ]] || fail "snakemake -n exit code $rc"
   cat "$tmp/out" "$tmp/err" | grep -Eq "^chunk +200 " || fail "expected 200 chunk jobs"
   [[ $(wc -l <screen/chunks/chunk_199.txt) -eq 1000 ]] || fail "the last chunk does not hold 1000 structures"

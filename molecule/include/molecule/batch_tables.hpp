@@ -44,6 +44,11 @@ private:
   std::mutex mutex_;
 };
 
+// sites.csv of one structure (`alphapocket pockets`): the header and the
+// rows batch's sites table has for it (from its report.json), so that a
+// batch run's sites.csv is its structures' sites.csv files joined.
+std::string sites_csv(const std::string& structure_id, const nlohmann::ordered_json& report);
+
 // Where a record is, and what a re-run needs to know of it.
 struct RecordLocation {
   std::size_t file = 0;  // index into the records files given

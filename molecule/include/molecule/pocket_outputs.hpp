@@ -2,6 +2,8 @@
 //
 //   report.json   every result (pocket_report), indented
 //   pockets.csv   one row per pocket (pockets_csv)
+//   sites.csv     one row per binding site, pockets and voids: the rows
+//                 of batch's sites table (sites_csv)
 //   structure.cif the atoms searched and the ligands (structure_copy),
 //                 which the viewer scripts load by a relative path
 //   pockets.pml   PyMOL script (pymol_script)

@@ -15,7 +15,8 @@
 //      belong to altlocs not chosen is dropped;
 //   3. waters are dropped unless keep_waters;
 //   4. hetero groups (ligands, ions, sugars, buffer molecules: residues that
-//      are neither polymer nor water) are dropped unless keep_hetero. A
+//      are neither polymer nor water) are dropped unless kept (keep_hetero:
+//      all; keep_hetero_codes: those named; keep_cofactors: kCofactors). A
 //      modified residue inside a polymer (MSE in a protein chain) is polymer
 //      and kept. Polymer or not comes from the mmCIF entities, or for PDB
 //      files from TER records and gemmi's polymer heuristics; HETATM records
@@ -61,7 +62,9 @@ struct StructureOptions {
   std::vector<std::string> chains;  // chain names (author chain ids) to keep; empty: all chains
   bool keep_hydrogens = false;
   bool keep_waters = false;
-  bool keep_hetero = false;
+  bool keep_hetero = false;                    // every hetero group
+  std::vector<std::string> keep_hetero_codes;  // hetero groups of these residue names ("ZN", "HEM")
+  bool keep_cofactors = false;                 // hetero groups named in kCofactors
   // Predicted models (StructureReport::predicted): residues whose pLDDT
   // (the B-factor column) is below this are dropped, after every other
   // reason. 0: none. Ignored, with a warning, for other structures.
@@ -74,6 +77,25 @@ struct StructureOptions {
   // gzip file claims.
   std::size_t max_input_mib = 512;
 };
+
+// Metal ions and cofactors that are part of a protein's working structure
+// rather than the ligands one looks for a site of (--keep-cofactors keeps
+// them as protein): the common metal ions, hemes, flavins, nicotinamides,
+// iron-sulfur clusters, pterins, and the like (PDB chemical component
+// codes). Substrates and nucleotides such as ATP, GTP or SAM are not in it:
+// they are the ligands of many sites.
+inline constexpr const char* kCofactors[] = {
+    // metal ions
+    "ZN", "MG", "CA", "FE", "FE2", "MN", "CU", "CU1", "CO", "NI", "NA", "K", "CD", "MO",
+    // hemes and chlorophylls
+    "HEM", "HEC", "HEA", "HEB", "CLA", "BCL",
+    // flavins, nicotinamides, quinones
+    "FAD", "FMN", "NAD", "NAP", "NDP", "NAI", "PQQ",
+    // iron-sulfur clusters, molybdopterin, other vitamin-derived cofactors
+    "SF4", "FES", "F3S", "MGD", "PLP", "TPP", "COA", "B12", "BTN"};
+
+// Whether the options keep a hetero group of this residue name.
+bool keeps_hetero(const StructureOptions& options, const std::string& residue_name);
 
 struct Atom {
   int serial = 0;            // atom serial number as in the file
