@@ -139,8 +139,8 @@ void print_paths(const molecule::Analysis& a) {
 // first by site rank, then the others in file order; at most kSummaryRows.
 void print_ligands(const molecule::Analysis& a) {
   using json = nlohmann::ordered_json;
-  const json& ligands = a.report.at("ligands");
-  const json& sites = a.report.at("sites");
+  const json& ligands = a.report->json.at("ligands");
+  const json& sites = a.report->json.at("sites");
   std::vector<const json*> order;
   for (const json& l : ligands) order.push_back(&l);
   std::stable_sort(order.begin(), order.end(), [](const json* x, const json* y) {
