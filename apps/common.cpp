@@ -36,6 +36,19 @@ CLI::Validator hetero_code() {
       "");
 }
 
+// probability or geometric, as the enum's number CLI11 stores; a plain
+// message otherwise (CLI11's own names its internal map).
+CLI::Validator ranking_name() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text == "probability") text = std::to_string(int(molecule::SiteRanking::probability));
+        else if (text == "geometric") text = std::to_string(int(molecule::SiteRanking::geometric));
+        else return "'" + text + "' is not a ranking (probability or geometric)";
+        return {};
+      },
+      "");
+}
+
 }  // namespace
 
 void add_input_options(CLI::App& sub, InputOptions& opt) {
@@ -127,10 +140,7 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
                  "Order of the sites: probability (the ligandability model's) or geometric (the score)")
       ->default_str("probability")
       ->type_name("ORDER")
-      ->transform(CLI::CheckedTransformer(
-                      std::map<std::string, molecule::SiteRanking>{{"probability", molecule::SiteRanking::probability},
-                                                                   {"geometric", molecule::SiteRanking::geometric}})
-                      .description(""));
+      ->transform(ranking_name());
 }
 
 CLI::Validator finite_number(double lo, double hi) {

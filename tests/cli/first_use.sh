@@ -22,6 +22,9 @@ case "$case_name" in
     [[ $(wc -c <"$tmp/err") -lt 120 ]] || fail "the message is long"
     run pockets --probe 200 "$data/3stdA.pdb" -o "$tmp/o"
     expect_error "--probe" "'200' is not between 0 and 100"
+    run pockets --ranking bogus "$data/3stdA.pdb" -o "$tmp/o"
+    expect_error "--ranking" "'bogus' is not a ranking (probability or geometric)"
+    [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2"
     [[ ! -e "$tmp/o" ]] || fail "OUTDIR made for a wrong command line"
     ;;
   unknown_subcommand)
