@@ -23,7 +23,7 @@ case "$case_name" in
     run pockets --probe 200 "$data/3stdA.pdb" -o "$tmp/o"
     expect_error "--probe" "'200' is not between 0 and 100"
     run pockets --ranking bogus "$data/3stdA.pdb" -o "$tmp/o"
-    expect_error "--ranking" "'bogus' is not a ranking (probability or geometric)"
+    expect_error "--ranking" "'bogus' is not a ranking \\(probability or geometric\\)"
     [[ $rc -eq 2 ]] || fail "exit code $rc, expected 2"
     [[ ! -e "$tmp/o" ]] || fail "OUTDIR made for a wrong command line"
     ;;
