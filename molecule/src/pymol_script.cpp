@@ -98,8 +98,11 @@ std::string cavities(const ViewerScene& scene) {
   }
   if (!scene.cavities.empty()) {
     s += "show spheres, *_space or *_center\n";
-    for (const SceneCavity& c : scene.cavities)
+    // The other sites' spheres see-through, so none hides the best one.
+    for (const SceneCavity& c : scene.cavities) {
+      if (c.site_rank != 1) s += "set sphere_transparency, 0.6, " + c.name + "_space\n";
       if (!c.shown) s += "disable " + c.name + "_space\ndisable " + c.name + "_center\n";
+    }
     s += "group spaces, *_space\n";
     s += "group centers, *_center\n";
   }

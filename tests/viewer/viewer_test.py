@@ -12,6 +12,8 @@ check_cxc.py (ChimeraX is not in Debian). One case per CTest test:
                site (report.json's first) in the middle of the view
                (which disabling the top site's objects takes away).
   pymol_3stdA  the same where the best site is a buried void.
+  pymol_1fkgA  the same where the second site's sphere lies between the
+               best site and the viewer (it must not hide it).
   pymol_pore   gramicidin A's pore: its spheres and lining residues.
   (pymol_1a26A and pymol_3stdA check the tunnels' spheres likewise.)
   injection    a file name and chain/residue/atom names made of newlines,
@@ -221,6 +223,14 @@ def view_case(structure, object_name, *args, min_paths=1):
         if with_top < 0.0025 * pixels or central < with_top / 2 or without_top > with_top / 4:
             fail(f"the top site's colour is not what shows in the middle: {with_top} pixels ({central} central), "
                  f"{without_top} without it")
+        # No other site hides it: in the middle, no next site's colour
+        # outnumbers the top site's more than twice.
+        for site in sites[1:4]:
+            other = f"{site['kind']}_{site['cavity_rank']}"
+            _, other_central, _ = near_color_pixels(os.path.join(tmp, "cwd", "view.png"), top_color(pml, other))
+            print(f"{other}: {other_central} central pixels of its colour")
+            if other_central > 2 * central:
+                fail(f"{other} hides the top site: {other_central} central pixels of its colour, {central} of the top's")
     finally:
         shutil.rmtree(tmp)
 
@@ -341,6 +351,8 @@ if CASE == "pymol_1a26A":
     view_case(os.path.join(ROOT, "examples", "data", "1a26A.pdb"), "1a26A")
 elif CASE == "pymol_3stdA":
     view_case(os.path.join(ROOT, "tests", "data", "3stdA.pdb"), "3stdA")
+elif CASE == "pymol_1fkgA":
+    view_case(os.path.join(ROOT, "tests", "data", "1fkgA.pdb"), "1fkgA")
 elif CASE == "pymol_pore":
     pore_case()
 elif CASE == "injection":
