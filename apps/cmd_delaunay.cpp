@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket delaunay FILE [--weighted] [--check] [--json]
 //
 // Builds the Delaunay (or, with --weighted, the regular) triangulation of a

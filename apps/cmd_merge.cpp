@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket merge DIR... -o OUTDIR
 //
 // The tables of several batch runs' OUTDIRs (chunks of one screen) as one:

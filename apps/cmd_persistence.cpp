@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket persistence FILE [--weighted]
 //
 // The persistence diagram of the alpha filtration, one line per pair:

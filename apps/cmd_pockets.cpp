@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket pockets FILE [-o OUTDIR] [--probe R] [--min-volume V]
 //                          [--mesh ply|obj|off|stl] [--json]
 //

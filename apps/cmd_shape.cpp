@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket shape FILE --alpha-sq V [--weighted] -o OUT.{ply,obj,off,stl}
 //
 // Writes the boundary of the alpha shape at alpha_sq = V as a triangle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket spectrum FILE [--weighted] [--alpha-sq V ...] [--json]
 //
 // The alpha spectrum of a point or structure file: its size, the optimal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket surface FILE [--probe R] [--json] [--per-atom] [--sa-only]
 //
 // Solvent-accessible surface (SAS) area and volume of a molecule: the union

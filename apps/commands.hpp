@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The subcommands of alphapocket, one file each (cmd_*.cpp). Each adds
 // itself to the top-level CLI11 app and returns the function that runs it
 // once the command line is parsed; that function returns the exit code and

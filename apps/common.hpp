@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the subcommands share: FILE (a point file or a structure file) and
 // its options, the points of FILE, their triangulation and alpha complex,
 // and a few helpers for options and output.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SIGINT and SIGTERM. This is the process's one piece of global state, and
 // it lives in apps/ only: the libraries never see signals.
 //

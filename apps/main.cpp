@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket: one executable, one subcommand per file (cmd_*.cpp).
 // Machine output goes to stdout; logs (spdlog) and errors go to stderr.
 #include <algorithm>

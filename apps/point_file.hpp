@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point files: plain text, one point per line.
 //
 //   # comment (also after the numbers on a line); blank lines are skipped

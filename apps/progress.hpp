@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress of a batch run on stderr: on a terminal a live bar (done/total,
 // structures/s, ETA, failures), redrawn at most 5 times a second; otherwise
 // one plain line every 10 s. Disabled: nothing at all (-q). Safe to call

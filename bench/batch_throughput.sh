@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Screening throughput: `alphapocket batch -j 2` against fpocket 4.0 run
 # through GNU parallel -j 2, in the same run, on the same structures
 # (default ../shared/data/pockets-train, 173 chains), then the scaling case

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole alpha complex family (triangulation, intervals, exactly sorted
 // spectrum, persistence) of alpha::AlphaComplex against CGAL's Alpha_shape_3
 // and GUDHI's Alpha_complex + persistent cohomology, on the same point sets,

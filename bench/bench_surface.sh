@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Times `alphapocket surface` against FreeSASA's Lee-Richards on the PDB
 # files shipped in the repository, in the same run, and compares their
 # solvent-accessible surface areas (ProtOr radii, probe 1.4 A, hydrogens

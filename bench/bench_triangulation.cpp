@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Construction time and memory of alpha::Triangulation against CGAL's
 // Delaunay_triangulation_3 / Regular_triangulation_3 (Epick, sequential) on
 // the same point sets, in one run; prints a table. See README.md.

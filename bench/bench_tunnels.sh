@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Time of the tunnels (from the top 3 sites, --tunnels-from auto) and all
 # pores (--pores) per structure, on top of the pocket search of the same
 # run: the times alphapocket logs for its stages (wall clock), per

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Byte-identical outputs: runs a reference build and a candidate build of
 # alphapocket on the same inputs and compares everything they print or
 # write (a speed-up must change no output). Inputs: the structures of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ligand-binding-site benchmark of `alphapocket pockets`: how often a
 // top-ranked site (a pocket, or a void that can hold a ligand: report.json's
 // "sites") is where a ligand binds, on holo structures whose

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds alphapocket and the ligand-site benchmark in BUILD_DIR (default
 # build/; a new one is configured for Release) and runs it: DCC and DCA at
 # top-1 and top-3 on the pockets-dev structures, sites per structure and

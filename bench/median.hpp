@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The median the benchmarks quote (noisy 2-core machine: medians, not means).
 #pragma once
 #include <algorithm>

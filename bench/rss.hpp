@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CPU time and peak resident-set growth of one piece of work (Linux): the
 // measuring shared by the benchmarks.
 #pragma once

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # install(): the static libraries, their public headers (no GMP, nlohmann,
 # OpenMesh or gemmi inside: checked by the test package.find_package), the
 # CMake package alphapocketConfig.cmake with its version file, a pkg-config

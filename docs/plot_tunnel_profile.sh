@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The radius profile of a pore (alphapocket's tunnel_profiles.csv) as a PNG,
 # against HOLE's profile of the same channel when its output is given.
 # Usage: plot_tunnel_profile.sh OUTDIR TUNNEL_RANK OUT.png [HOLE_OUT.txt]

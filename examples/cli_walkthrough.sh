@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A tour of the alphapocket command line on a real protein, from the
 # triangulation to the pockets. Every step prints what it runs.
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The molecule API on a real protein: read a structure, find its cavities,
 // and see where its bound ligand sits among the candidate binding sites.
 //

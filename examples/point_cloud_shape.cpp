@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libalpha on a plain point cloud: points sampled on a torus, their alpha
 // complex, its spectrum and persistence, and the alpha shape that recovers
 // the torus written as a mesh file for MeshLab.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every fuzz target checks of an error message: the project's rule for
 // bad input is one line naming the file. A violated property aborts, which
 // libFuzzer reports as a crash with the input that caused it.

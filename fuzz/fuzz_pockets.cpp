@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole pocket search (molecule::analyse_content: read, alpha complex,
 // cavities, ranking, tunnels, report) on arbitrary bytes, mostly small
 // mutated structures. Properties: an error is an AnalysisError with a

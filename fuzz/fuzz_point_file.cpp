@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The point-file parser on arbitrary text, unweighted and weighted.
 // Properties: an error is a std::runtime_error with a one-line message
 // naming the file; a result has finite points within 1e15, one

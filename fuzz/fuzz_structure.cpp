@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The structure reader on arbitrary bytes: PDB, mmCIF and gzip (the format
 // is found from the content). Each input is read twice, with the default
 // selection and with everything kept. Properties: an error is a

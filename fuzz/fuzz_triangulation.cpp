@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The triangulation and alpha complex on adversarial coordinates decoded
 // from the fuzzer's bytes: small integer grids (duplicates, coplanar and
 // cospherical subsets), grids nudged by a few ulps of their scale

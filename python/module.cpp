@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The compiled half of the Python package `alphapocket` (alphapocket/_core):
 // thin bindings of molecule::analyse, molecule::measure_surface and
 // alpha::AlphaComplex. The Python half (alphapocket/__init__.py) turns the

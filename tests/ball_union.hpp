@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A union of balls for the tests, with the triangulation and complex it
 // refers to kept alive.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An independent test of the molecular surface: the distance from a point
 // to the outside of a union of balls, by brute force over the candidates
 // for its nearest boundary point (each sphere's nearest point, each

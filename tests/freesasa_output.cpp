@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "freesasa_output.hpp"
 
 #include <catch2/catch.hpp>

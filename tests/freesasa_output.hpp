@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-atom output of the `freesasa` program (FreeSASA, Debian package
 // freesasa), a test oracle for radii and areas: `freesasa --format=pdb`
 // writes each atom with the radius it used in the occupancy column and its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What tests of written files share: a scratch directory, reading a file
 // back, and reading a mesh back through OpenMesh (what a viewer such as
 // MeshLab sees) with the checks a surface must pass.

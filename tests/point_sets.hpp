@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point sets for the tests: random, degenerate and weighted, all seeded.
 #pragma once
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CGAL and GUDHI as independent oracles of the alpha complex itself:
 //
 //  1. CGAL's Alpha_shape_3 in GENERAL mode on an exact kernel (Epeck: every

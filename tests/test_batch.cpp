@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pieces of `alphapocket batch` below the CLI: which files an input
 // names and their ids (molecule/batch_inputs.hpp), predicted models and
 // their pLDDT (structure.hpp, pocket_report.hpp), the one-structure

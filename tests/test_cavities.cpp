@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // molecule::find_cavities on synthetic ball sets with known answers (a
 // hollow shell, a shell with a hole, a ring, a grid of cubic voids) and on
 // a real protein.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CGAL as an independent oracle: on generic inputs (random doubles) the
 // Delaunay / regular triangulation is unique, so ours must match CGAL's
 // simplex for simplex. On a degenerate grid only invariants are compared.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The library keeps no global mutable state: searches on different
 // structures run in parallel threads give bit-for-bit the results of a
 // sequential run, and one alpha complex shared by threads computes its

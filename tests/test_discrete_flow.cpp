@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alpha::DiscreteFlow: the flow relation against its geometric definition
 // (orthocenter beyond the facet, in floating point where that is clear),
 // its order properties (monotone, acyclic, one direction per facet), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ErodedUnion (the solvent-excluded body of a union of balls) against
 // closed forms and a Monte Carlo estimate from an independent nearest-point
 // test (depth_oracle.hpp); its area against the derivative of its volume

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error kinds: what a caller acts on (alpha::ErrorKind), kept when the file
 // name is added (alpha::in_file).
 #include <catch2/catch.hpp>

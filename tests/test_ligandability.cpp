@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ligandability model (molecule/ligandability_model.hpp) and its
 // features (molecule/site_features.hpp): the compiled-in model gives the
 // margins and probabilities scikit-learn gave on every pockets-dev site

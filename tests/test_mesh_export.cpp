@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // molecule::write_mesh_file: round trips through OpenMesh's readers (what a
 // viewer such as MeshLab sees), for every format, on alpha shape boundaries.
 #include <catch2/catch.hpp>

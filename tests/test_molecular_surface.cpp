@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The molecular (solvent-excluded) surface of real proteins
 // (alpha::ErodedUnion on the atoms of molecule::read_structure): its volume
 // against a Monte Carlo estimate from an independent nearest-point test

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alpha::persistent_basins: a partition of the cells, the connected
 // components at an infinite threshold, one flow sink per basin at
 // threshold 0, coarser with a larger threshold, and the exact answer on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The outputs of `alphapocket pockets` (molecule::PocketOutputDir and what
 // it writes): report.json against its documented schema (README.md),
 // pockets.csv, meshes read back through OpenMesh, pockets.pml, pockets.pdb

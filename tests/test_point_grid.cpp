@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alpha::PointGrid against brute force: every point within the radius is
 // visited, nothing outside the cube's cells is, each once; far, infinite
 // and NaN queries and far-apart points neither misbehave nor walk the

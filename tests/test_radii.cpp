@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ProtOr radii (molecule/radii.hpp): values from Tsai et al. (1999) by hand,
 // and FreeSASA's own radii (the `freesasa` program, when installed) as the
 // oracle for whole proteins and for the element fallback.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The library's internal radix sort (libalpha/src/radix_sort.hpp) against
 // std::stable_sort: same order, equal keys kept in input order.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading structure files (molecule/structure.hpp): the same atoms from PDB,
 // mmCIF and gzip forms of one entry; selection counts checked against an
 // independent count of the PDB records; alternate locations, hydrogens,

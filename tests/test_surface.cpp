@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The surface job (molecule::measure_surface, measure_balls) on closed
 // forms, flat and tiny inputs, and its error kinds; analyse's error kinds.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Solvent-accessible surface area of real proteins (molecule::measure_surface
 // on the atoms of molecule::read_structure, ProtOr radius + probe 1.4 A)
 // against FreeSASA's Lee-Richards with many slices, in total and atom by

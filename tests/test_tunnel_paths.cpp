@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // molecule::find_tunnel_paths (tunnels and pores with radius profiles) on
 // configurations with closed forms, every profile radius against a scan of
 // all atoms, and gramicidin A against HOLE; molecule::radius_file.

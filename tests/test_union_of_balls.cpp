@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UnionOfBalls against closed forms, an independent numerical integration
 // (slices along z: exact 2D union of discs, integrated by Gauss-Legendre
 // between the heights where the slice's arrangement changes), and Monte

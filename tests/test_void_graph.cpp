@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alpha::VoidGraph and alpha/void_paths: the narrowest point of every
 // power-diagram edge against dense sampling of the edge, widest paths
 // against a brute-force maximin over all simple paths and against

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Rebuilds alphapocket's ligandability model from ../shared/data (see training/README.md).
 
     /usr/bin/python3 training/train.py [--alphapocket EXE] [--data DIR] [--work DIR] [--model KIND]

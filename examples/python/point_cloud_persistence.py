@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The persistence of a point cloud: points on a torus, whose two 1-cycles
 and one 2-cycle stand out of the noise in the alpha complex's diagram.
 

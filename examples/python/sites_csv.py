@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """A structure's candidate binding sites as a CSV table (no pandas needed),
 ranked by the ligandability model's probability.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Neumaier's compensated sum: the error does not grow with the number of
 // terms, and a fixed order of additions makes the result deterministic.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Doubles as exact dyadic numbers m * 2^e: scaling the values of one exact
 // evaluation to a common power of two turns them into integers.
 #pragma once

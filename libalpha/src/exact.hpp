@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact evaluation of the determinant signs behind the predicates.
 // Doubles are exact dyadic numbers m*2^e; shifting all values of one call to
 // a common exponent turns them into integers, evaluated in 128-bit integers

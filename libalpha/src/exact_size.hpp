@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact sizes of simplices as GMP fractions: internal to libalpha (the
 // public alpha/sizes.hpp carries no GMP), used by the spectrum sort and the
 // tests.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Transparent huge pages for big arrays. Filling fresh memory takes a page
 // fault per 4 KiB page, a large share of the time spent writing arrays of
 // hundreds of megabytes once; 2 MiB pages take 512 times fewer. Only a hint

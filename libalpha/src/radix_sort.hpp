@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stable sort by an unsigned integer key, in linear time: the alpha complex
 // sorts tens of millions of sizes and ranks, where comparison sorts spend
 // most of their time in mispredicted branches.

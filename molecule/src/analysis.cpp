@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "molecule/analysis.hpp"
 
 #include "molecule/pocket_outputs.hpp"

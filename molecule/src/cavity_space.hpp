@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The empty space of the cells and triangles of the solvent-accessible
 // complex (alpha_sq = 0 on the probe-inflated balls), what a cavity's
 // volume, area, centre, mouths and depth are summed from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decompression of gzip data (RFC 1952) with zlib, strictly: a truncated
 // stream, corrupt data or a wrong checksum is an error, never a silently
 // shortened text. Concatenated gzip members are read one after another.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distance from a point to the nearest of a set of triangles, equal to the
 // smallest point_triangle_distance over all of them (what a scan gives),
 // without the scan: a cavity's depth asks it for every cell, and on a large

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "molecule/structure.hpp"
 
 // Compiled as C++17 by clang (molecule/CMakeLists.txt): no std::span or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "molecule/tunnel_paths.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """alphapocket: cavities in molecules from exact 3D alpha shapes.
 
 analyze(structure) finds the pockets, voids and tunnels of a structure as

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Shared fixtures: the alphapocket binary and the repository (set by CTest).
 import os
 import subprocess

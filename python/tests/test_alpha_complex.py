@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # AlphaComplex: spectrum, classification, Betti numbers, persistence and
 # shape against closed forms and the CLI.
 import math

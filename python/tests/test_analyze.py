@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # analyze(): the report and files of `alphapocket pockets`, from a path,
 # from arrays and from a gemmi structure.
 import filecmp

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The bad-input catalog (tests/cli/catalog.cases) through the module: every
 # row of `pockets` and `surface` on a bad input file raises the exception of
 # its kind with the message the command line prints (the row's pattern);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Bad input raises the documented exception types with the CLI's messages.
 import numpy as np
 import pytest

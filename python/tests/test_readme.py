@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The README's "Use from Python" examples and examples/python/ run.
 import re
 import subprocess

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # surface(): `alphapocket surface --json --per-atom`'s numbers.
 import json
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Long calls release the GIL: 4 threads give the serial results, and other
 # Python threads keep running during each long call.
 import sys

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # CLI tests of `alphapocket batch` and `alphapocket merge`, one case per
 # CTest test. Usage: batch.sh ALPHAPOCKET REPO_ROOT CASE
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # CLI tests of `alphapocket delaunay`, one case per CTest test.
 # Usage: delaunay.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail

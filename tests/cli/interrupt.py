@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Interrupted runs leave OUTDIR describing one run, and no temporaries.
 
 `pockets` is stopped by SIGINT, SIGTERM or SIGKILL at random moments of a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Shared set-up and helpers of the CLI test scripts, sourced with the
 # script's arguments: source lib.sh ALPHAPOCKET REPO_ROOT CASE.
 # Needs only bash, grep and coreutils (no python, no jq): a fresh Debian 12

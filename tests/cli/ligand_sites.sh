@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Tests of the ligand-site benchmark's scoring (bench/ligand_sites.cpp), on
 # a hand-made dataset whose hits are known: `ligand_sites --reports` reads
 # given site centres and runs nothing. Usage: ligand_sites.sh LIGAND_SITES

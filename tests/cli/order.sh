@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Results are a function of the set of atoms, not of the order of the
 # records: the ATOM/HETATM records of a file permuted (within residues,
 # residue order, reversed, a full shuffle; each within its TER-delimited

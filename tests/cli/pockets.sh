@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # CLI tests of `alphapocket pockets`, one case per CTest test. Exit code 77
 # means skipped. Usage: pockets.sh ALPHAPOCKET REPO_ROOT CASE
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # CLI tests of structure files as input (any subcommand taking FILE): the
 # atom selection options, atoms as weighted points (ProtOr radius + probe),
 # and one-line errors for bad files. One case per CTest test.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # CLI tests of the tunnels and pores of `alphapocket pockets` (--tunnels-from,
 # --tunnel-probe, --pores, --radii) and their files: tunnels.csv,
 # tunnel_profiles.csv, tunnels.pdb. The paths themselves are checked in

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The installed package: `cmake --install` into a temporary prefix, no GMP,
 # nlohmann, OpenMesh or gemmi in the installed headers, then README's "Use
 # from C++" example built there with find_package(alphapocket) and run, the

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """A strict reader of pockets.cxc: every line must be a comment or one of
 the ChimeraX commands alphapocket writes, with arguments of exactly the
 form it writes them (ChimeraX is not in Debian, so its parser cannot run

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """The viewer scripts of `alphapocket pockets` in the real viewer: PyMOL
 2.5 headless (`pymol -cq`, Debian's pymol), ChimeraX's script through
 check_cxc.py (ChimeraX is not in Debian). One case per CTest test:

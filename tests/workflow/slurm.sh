@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # A real single-node Slurm cluster on this machine, for the workflow tests:
 # munged, slurmctld and slurmd started as root on localhost (no systemd, no
 # accounting database, no cgroups), everything under one scratch directory.

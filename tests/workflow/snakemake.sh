@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The Snakemake workflow (workflow/Snakefile) on the structures shipped in
 # the repository, in chunks of 4: its tables must be byte-identical to one
 # `alphapocket batch` run over the same structures.

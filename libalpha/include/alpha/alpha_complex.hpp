@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The family of alpha complexes of a (weighted) point set (Edelsbrunner &
 // Muecke 1994; weighted: Edelsbrunner 1992), computed once for all alpha.
 //

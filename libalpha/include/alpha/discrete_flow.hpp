@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The discrete flow of the empty cells of an alpha complex at one level
 // (Edelsbrunner, Facello & Liang 1998, "On the definition and the
 // construction of pockets in macromolecules"; Giesen & John's flow complex).

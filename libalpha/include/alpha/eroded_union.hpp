@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A union of balls eroded by a ball of radius r: the points whose distance
 // to the outside of the union is at least r. For the probe-inflated atoms
 // of a molecule (radii r_i + r) it is the body bounded by the molecular

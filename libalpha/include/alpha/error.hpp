@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Library errors: one exception type with a category a caller can act on,
 // thrown through one function. Library code never prints or exits; callers
 // decide what to do (the CLI's exit code per category: apps/main.cpp).

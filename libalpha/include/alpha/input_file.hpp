@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole-file input shared by every reader (point files, structures): one
 // place decides what a missing, unreadable, directory or empty input is
 // called, so every command reports it the same way.

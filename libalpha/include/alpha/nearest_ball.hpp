@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distance from a point to the nearest of a set of balls' spheres (the
 // radius of the largest ball centred there that meets none of them;
 // negative inside a ball), exact per query: the balls are bucketed in a

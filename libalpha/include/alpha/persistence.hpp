@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Persistent homology (Z/2) of a filtration of a 3D triangulation's finite
 // simplices: each simplex enters at an integer rank, and faces never enter
 // after their cofaces. Ties are broken by dimension, then id (the order of

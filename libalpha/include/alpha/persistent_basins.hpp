@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The basins of the empty space of an alpha complex, simplified by
 // persistence: a region of empty cells split where it narrows.
 //

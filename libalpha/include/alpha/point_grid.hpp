@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Points bucketed in a uniform grid, for "all points near x" queries when
 // the query radius is about the grid's spacing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact geometric predicates on (weighted) points, all in one place.
 //
 // Every predicate follows one pattern: a floating-point evaluation with a

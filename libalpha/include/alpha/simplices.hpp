@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The finite edges and triangles of a triangulation, with ids and the
 // incidences the alpha complex walks: down (a triangle's edges, an edge's
 // vertices) and up (a vertex's edges, an edge's triangles, a triangle's two

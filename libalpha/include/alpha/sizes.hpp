@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact sizes of simplices, the values an alpha complex is filtered by.
 //
 // For a simplex of 1..4 affinely independent weighted points (p_i, w_i),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Insertion order for incremental construction: a Biased Randomized
 // Insertion Order (Amenta, Choi & Rote 2003) whose rounds are each sorted
 // along a Hilbert curve, so consecutive points are close (short walks, warm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Regular (weighted Delaunay) triangulation of points in 3D; the Delaunay
 // triangulation is the special case of no weights.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Area and volume of a union of balls, analytically, from its dual complex.
 //
 // A weighted point (p, w) is the ball of center p and radius r = sqrt(w).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact validity check of a triangulation: combinatorial consistency,
 // positive orientation, local regularity of every facet (which, with a
 // convex hull, implies global regularity) and convexity of the hull.

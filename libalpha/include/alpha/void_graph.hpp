@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The void graph of a set of balls: the 1-skeleton of their power diagram,
 // the graph a probe travels on through the free space between the balls.
 //

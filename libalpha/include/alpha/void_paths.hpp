@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paths on the void graph (alpha/void_graph.hpp): the widest paths (the
 // largest probe that can travel from a source to each node) and the
 // cheapest paths under a cost that favours short and wide ways (as tunnel

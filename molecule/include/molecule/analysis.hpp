@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One structure from file to results: read, cavity search, report and the
 // chosen output files. `alphapocket pockets` and `alphapocket batch` both
 // run a structure through this, so the two cannot drift apart.

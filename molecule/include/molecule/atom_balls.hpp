@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The atoms as the weighted points every search is built on: atom i is the
 // ball of radius r_i + probe (r_i its van der Waals radius), i.e. the
 // weighted point (x_i, (r_i + probe)^2); alpha_sq = 0 is then the

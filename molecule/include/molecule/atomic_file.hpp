@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Output files that appear whole or not at all: the content goes to a
 // hidden temporary file in the target's directory, which is renamed to the
 // target only once complete (rename is atomic within one file system), and

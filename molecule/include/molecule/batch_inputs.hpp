@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The structures of a batch run: what `alphapocket batch INPUT...` means
 // by its inputs, and the id each structure is known by in the tables.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a batch run keeps of one structure: one record, one line of JSON in
 // OUTDIR/records.jsonl. It holds the structure's rows of the run's tables
 // (batch_tables.hpp), so the tables of any set of records can be written

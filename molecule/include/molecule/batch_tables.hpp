@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tables of a batch run, for the whole run, rows sorted by structure
 // id (so they depend neither on -j nor on the order of the inputs):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cavities of a molecule found on the weighted alpha complex of its atoms
 // (balls of radius r_i + probe, alpha_sq = 0: the solvent-accessible model).
 //

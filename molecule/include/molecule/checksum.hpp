@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Content checksums: SHA-256 (Debian's nettle), as 64 hex digits. Batch
 // runs know by it whether an input changed since it was analysed.
 #pragma once

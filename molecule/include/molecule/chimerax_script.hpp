@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pockets.cxc: a ChimeraX command script with the content of pockets.pml
 // (`chimerax OUTDIR/pockets.cxc`, or `open OUTDIR/pockets.cxc` inside
 // ChimeraX, which runs it from the script's own directory).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ligandability model: how likely a ligand binds in a cavity, from its
 // features (molecule/site_features.hpp). An ensemble of decision trees
 // (gradient-boosted or a random forest, fitted by training/ on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing triangle meshes (alpha shape boundaries, later pockets) to the
 // files that mesh viewers such as MeshLab open, through OpenMesh.
 //

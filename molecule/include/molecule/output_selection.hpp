@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which files of `alphapocket pockets` (pocket_outputs.hpp) a run writes.
 #pragma once
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The colour of a pocket or void, the same in every output (mesh face
 // colours, the viewer scripts), given in the order of the binding sites
 // (Cavities::sites), so that the best site is red whether it is a pocket

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The output directory of `alphapocket pockets`:
 //
 //   report.json   every result (pocket_report), indented

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pockets.pdb: the cavities as pseudo-atoms in PDB format, fpocket-style,
 // for ChimeraX, PyMOL, VMD or any other structure viewer (open it together
 // with the structure: the coordinates are the same).

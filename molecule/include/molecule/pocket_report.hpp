@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The machine-readable results of `alphapocket pockets`: report.json (every
 // number of the run, schema documented in README.md, section "report.json")
 // and pockets.csv (one row per pocket, for spreadsheets and scripts).

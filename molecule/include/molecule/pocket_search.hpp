@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole cavity search on a structure, as `alphapocket pockets` runs it:
 // atom i becomes the weighted point (x_i, (r_i + probe)^2), r_i its ProtOr
 // radius; their regular triangulation and alpha complex give the cavities

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pockets.pml: a PyMOL script that shows the cavities on the structure
 // (`pymol OUTDIR/pockets.pml` from any directory, or `@OUTDIR/pockets.pml`
 // inside PyMOL; tested with PyMOL 2.5).

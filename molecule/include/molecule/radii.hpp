@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic radii: the ProtOr united-atom radii of
 //
 //   J. Tsai, R. Taylor, C. Chothia, M. Gerstein, "The packing density in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic radii from a file (`alphapocket pockets --radii FILE`), because
 // tunnel radii are compared across tools with their radius sets.
 //

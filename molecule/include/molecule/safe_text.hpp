@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // User-controlled text (file names; chain, residue and atom names; hetero
 // codes) on its way into a script a viewer executes or a fixed-format
 // file: made harmless there, so that it can never start a line, a command

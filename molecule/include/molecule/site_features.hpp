@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the ligandability model (molecule/ligandability_model.hpp) knows of
 // a cavity: a fixed list of numbers, its geometry as find_cavities measured
 // it and the chemistry of the atoms lining it, the evidence P2Rank uses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A directory that appears whole or not at all, replacing an earlier one of
 // the same name. Its files are written into a hidden sibling,
 // ".NAME.alphapocket-new", which commit() swaps in with one atomic rename

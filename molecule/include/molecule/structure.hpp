@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Macromolecular structure files (PDB, mmCIF, either optionally gzipped),
 // read through gemmi, reduced to the atoms a cavity search works on.
 //

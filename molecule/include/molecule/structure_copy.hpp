@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // structure.cif: the atoms a pocket search used, and the hetero groups it
 // left out (the ligands), as a minimal mmCIF file inside the output
 // directory. The viewer scripts (pockets.pml, pockets.cxc) load it by a

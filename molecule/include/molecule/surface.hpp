@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The surface job (`alphapocket surface`): the solvent-accessible (SA)
 // area and volume of a set of balls, measured analytically as their union
 // over the weighted alpha complex at alpha_sq = 0 (alpha::UnionOfBalls), the

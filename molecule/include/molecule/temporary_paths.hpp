@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The temporary files and directories of writes in progress, for a caller
 // that may have to abandon them at any moment (apps/interrupt: a signal).
 // abandon() removes every registered path and from then on blocks every

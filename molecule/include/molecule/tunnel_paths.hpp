@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tunnels and pores as tunnel programs (CAVER, MOLE, HOLE) report them:
 // paths a probe can travel, with a centreline, a radius profile, a length,
 // a bottleneck and the residues lining them; computed on the void graph of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where `alphapocket pockets --tunnels-from SPEC` starts tunnels. SPEC is
 //   auto       the deepest point of each of the top 3 sites (the default)
 //   none       no tunnels

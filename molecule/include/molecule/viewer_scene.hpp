@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the viewer scripts (pockets.pml for PyMOL, pockets.cxc for
 // ChimeraX) show, computed once for both: the structure object, each
 // cavity with its site rank, colour, lining atoms (as atom ids of
