@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // alphapocket batch INPUT... -o OUTDIR [-j N] [--list FILE] [--outputs LIST]
 //                  [--max-atoms N] [the options of pockets]
 // alphapocket batch INPUT... [--list FILE] --print-inputs

@@ -73,6 +73,8 @@ molecule::AnalysisOptions analysis_options(const py::dict& o) {
   a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();
   a.structure.keep_waters = o["keep_waters"].cast<bool>();
   a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
+  a.structure.keep_hetero_codes = o["keep_hetero_codes"].cast<std::vector<std::string>>();
+  a.structure.keep_cofactors = o["keep_cofactors"].cast<bool>();
   a.structure.min_plddt = o["min_plddt"].cast<double>();
   a.structure.max_input_mib = max_input_mib(o);
   a.radii_file = o["radii"].cast<std::string>();
@@ -163,6 +165,8 @@ molecule::StructureOptions surface_selection(const py::dict& selection) {
   so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
   so.keep_waters = selection["keep_waters"].cast<bool>();
   so.keep_hetero = selection["keep_hetero"].cast<bool>();
+  so.keep_hetero_codes = selection["keep_hetero_codes"].cast<std::vector<std::string>>();
+  so.keep_cofactors = selection["keep_cofactors"].cast<bool>();
   so.max_input_mib = max_input_mib(selection);
   so.min_atoms = 1;
   return so;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where hetero groups lie among the binding sites (molecule/ligand_sites.hpp)
 // against brute force: every heavy atom against every cell of every site,
 // inside by barycentric coordinates, outside by the distance to each face

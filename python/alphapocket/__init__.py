@@ -29,7 +29,8 @@ __all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", 
 
 # The defaults of `alphapocket pockets`.
 _ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=4.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
-                         keep_hetero=False, min_plddt=0.0, radii="", tunnels_from="auto", tunnel_probe=0.9,
+                         keep_hetero=False, keep_cofactors=False, min_plddt=0.0, radii="", tunnels_from="auto",
+                         tunnel_probe=0.9,
                          pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels",
                          ranking="probability", max_input_mb=512)
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
@@ -70,7 +71,8 @@ def _converted(key, value):
 
 class Analysis:
     """What analyze() found: .sites (each with .cavity, its pocket or void),
-    .pockets, .voids, .tunnels (Records, as report.json holds them),
+    .pockets, .voids, .tunnels, .ligands (Records, as report.json holds
+    them: each ligand with the site holding it),
     .report (report.json as a dict), .to_json() (report.json's text) and
     .write(outdir) (the files of `alphapocket pockets`)."""
 
@@ -78,7 +80,7 @@ class Analysis:
         self._core = core
         self._text = core.report_json()
         self.report = json.loads(self._text)
-        for key in ("sites", "pockets", "voids", "tunnels"):
+        for key in ("sites", "pockets", "voids", "tunnels", "ligands"):
             setattr(self, key, [Record(r) for r in self.report.get(key, [])])
         for site in self.sites:  # its pocket or void, with the lining residues and MS volume
             site.cavity = (self.pockets if site.kind == "pocket" else self.voids)[site.cavity_rank - 1]
@@ -139,6 +141,22 @@ def _input(structure, kwargs):
     raise MisuseError("analyze/surface: give a file path, a gemmi.Structure or coordinates=... (and radii=...)")
 
 
+def _hetero_option(options):
+    """keep_hetero: True (all), False, or residue codes ("ZN,HEM" or a list),
+    as --keep-hetero[=CODES]: the core's keep_hetero and keep_hetero_codes."""
+    value = options["keep_hetero"]
+    if isinstance(value, bool):
+        codes = []
+    else:
+        codes = [c.strip().upper() for c in (value.split(",") if isinstance(value, str) else value)]
+        bad = [c for c in codes if not (0 < len(c) <= 5 and c.isascii() and c.isalnum())]
+        if bad:
+            raise MisuseError(f"keep_hetero: {bad[0]!r} is not a residue code (1-5 letters and digits, e.g. ZN,HEM)")
+    options["keep_hetero"] = value is True or "ALL" in codes
+    options["keep_hetero_codes"] = [c for c in codes if c != "ALL"]
+    options["keep_cofactors"] = bool(options["keep_cofactors"])
+
+
 def _core_arrays(arrays):
     xyz = np.ascontiguousarray(arrays["coordinates"], dtype=float)
     radii = arrays.get("radii")
@@ -150,7 +168,8 @@ def _core_arrays(arrays):
 def analyze(structure=None, **options):
     """Pockets, voids, sites and tunnels of a structure (see the module doc);
     options as `alphapocket pockets` names them: probe=1.4, min_volume=4,
-    model, chains=[...], keep_hydrogens, keep_waters, keep_hetero, min_plddt,
+    model, chains=[...], keep_hydrogens, keep_waters, keep_hetero (True, or
+    residue codes: "ZN,HEM" or ["ZN", "HEM"]), keep_cofactors, min_plddt,
     radii (a radius file), tunnels_from="auto", tunnel_probe=0.9, pores,
     mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels" (what write() writes; a subset),
     ranking="probability" (sites by the ligandability model's probability,
@@ -163,6 +182,7 @@ def analyze(structure=None, **options):
         raise MisuseError("analyze: unknown option(s) " + ", ".join(sorted(unknown)))
     opts = dict(_ANALYZE_DEFAULTS, **options)
     opts["chains"] = list(opts["chains"])
+    _hetero_option(opts)
     opts["radii"] = os.fspath(opts["radii"])
     if isinstance(opts["tunnels_from"], int):
         opts["tunnels_from"] = str(opts["tunnels_from"])
@@ -191,14 +211,16 @@ def surface(structure=None, probe=1.4, excluded=True, **selection):
     """Solvent-accessible (SA) and solvent-excluded (MS) area and volume, as
     `alphapocket surface --json`; excluded=False skips the MS surface
     (--sa-only). Selection: model, chains, keep_hydrogens, keep_waters,
-    keep_hetero; max_input_mb=512 as in analyze()."""
+    keep_hetero, keep_cofactors; max_input_mb=512 as in analyze()."""
     kind, source, data = _input(structure, selection)
-    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False, max_input_mb=512)
+    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False, keep_cofactors=False,
+               max_input_mb=512)
     unknown = set(selection) - set(sel)
     if unknown:
         raise MisuseError("surface: unknown option(s) " + ", ".join(sorted(unknown)))
     sel.update(selection)
     sel["chains"] = list(sel["chains"])
+    _hetero_option(sel)
     if kind == "path":
         return SurfaceResult(_core.surface_path(source, float(probe), bool(excluded), sel))
     if kind == "text":

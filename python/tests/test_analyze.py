@@ -115,3 +115,18 @@ def test_features_equal_the_cli_file(pdb_analysis, tmp_path):
     row = [i for i in range(n) if columns["site_rank"][i] == 1][0]
     assert columns["kind"][row] == site.kind and columns["cavity_rank"][row] == site.cavity_rank
     assert columns["probability"][row] == pytest.approx(site.probability, abs=5e-5)
+
+
+@pytest.mark.parametrize("option, flag", [({"keep_hetero": "zn,CA"}, "--keep-hetero=ZN,CA"),
+                                          ({"keep_hetero": ["ZN", "CA"]}, "--keep-hetero=ZN,CA"),
+                                          ({"keep_cofactors": True}, "--keep-cofactors")])
+def test_hetero_selection_and_ligands(option, flag, tmp_path):
+    """keep_hetero with residue codes and keep_cofactors select as the CLI's
+    flags do; .ligands are report.json's ligands, each with its site."""
+    path = DATA / "1fbl.pdb"  # HTA, 4 Ca, 2 Zn
+    cli("pockets", path, flag, "--tunnels-from", "none", "-o", tmp_path / "cli", "-q")
+    a = alphapocket.analyze(path, tunnels_from="none", **option)
+    assert a.to_json() == (tmp_path / "cli" / "report.json").read_text()
+    assert len(a.ligands) == len(a.report["ligands"]) > 0
+    assert [vars(x).keys() for x in a.ligands][0] == a.report["ligands"][0].keys()
+    assert a.report["input"]["atoms_kept"] > alphapocket.analyze(path, tunnels_from="none").report["input"]["atoms_kept"]

@@ -55,6 +55,8 @@ def test_misuse():
         alphapocket.analyze(coordinates=np.eye(5, 3), radii=[1.0])
     with pytest.raises(alphapocket.MisuseError, match="unknown output 'reports'"):
         alphapocket.analyze(DATA / "1fkgA.pdb", outputs="reports")
+    with pytest.raises(alphapocket.MisuseError, match="not a residue code"):
+        alphapocket.analyze(DATA / "1fkgA.pdb", keep_hetero="ZN,H E M")
     with pytest.raises(alphapocket.MisuseError, match="ranking"):
         alphapocket.analyze(DATA / "1fkgA.pdb", ranking="best")
     with pytest.raises(alphapocket.MisuseError):

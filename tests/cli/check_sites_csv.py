@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """sites.csv of `alphapocket pockets` read back and checked against
 report.json: one row per site (pockets and voids), in rank order, each
 value equal to the report's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the hetero groups of a structure (ligands, ions, cofactors) lie
 // among its binding sites (Cavities::sites), for report.json's ligands[]
 // and the summary ("ligand CNA A:200 in site 1").
