@@ -245,6 +245,8 @@ int run_pockets(const PocketsOptions& opt) {
   if (!opt.features.empty())
     molecule::write_file_atomically(opt.features,
                                     molecule::site_features_csv(analysis.structure, analysis.search.cavities));
+  if (opt.analysis.outputs.meshes)
+    spdlog::info("meshes: {:.3f} s at resolution {} A", out.mesh_seconds(), opt.analysis.mesh_resolution);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 

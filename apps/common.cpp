@@ -142,6 +142,11 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
       ->default_str("probability")
       ->type_name("ORDER")
       ->transform(ranking_name());
+  sub.add_option("--mesh-resolution", options.mesh_resolution,
+                 "Triangle size of the meshes (lattice spacing), A; finer is closer to the analytic surface and slower")
+      ->capture_default_str()
+      ->check(finite_number())
+      ->check(CLI::PositiveNumber.description(""));
 }
 
 CLI::Validator finite_number(double lo, double hi) {

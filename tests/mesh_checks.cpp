@@ -1,5 +1,8 @@
 #include "mesh_checks.hpp"
 
+#include <cstring>
+#include <sstream>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -84,6 +87,50 @@ double signed_volume(const ReadMesh& mesh) {
     v += OpenMesh::dot(p[0], OpenMesh::cross(p[1], p[2])) / 6;
   }
   return v;
+}
+
+}  // namespace testing
+
+namespace testing {
+
+std::vector<int> vertex_sites(const std::filesystem::path& file) {
+  const std::string bytes = read_text(file);
+  const std::size_t end = bytes.find("end_header\n");
+  REQUIRE(end != std::string::npos);
+  std::istringstream header(bytes.substr(0, end));
+  std::string line;
+  std::size_t vertices = 0, offset = 0, stride = 0;
+  bool in_vertex = false, found = false;
+  const auto size_of = [](const std::string& type) -> std::size_t {
+    if (type == "float" || type == "int" || type == "float32" || type == "int32" || type == "uint") return 4;
+    if (type == "uchar" || type == "char" || type == "uint8") return 1;
+    if (type == "double") return 8;
+    return 2;
+  };
+  while (std::getline(header, line)) {
+    std::istringstream w(line);
+    std::string a, b, c;
+    w >> a >> b >> c;
+    if (a == "format") REQUIRE(b == "binary_little_endian");
+    if (a == "element") {
+      in_vertex = b == "vertex";
+      if (in_vertex) vertices = std::stoul(c);
+    }
+    if (a == "property" && in_vertex) {
+      if (c == "site") {
+        REQUIRE(b == "int");
+        found = true;
+        offset = stride;
+      }
+      stride += size_of(b);
+    }
+  }
+  REQUIRE(found);
+  std::vector<int> out(vertices);
+  const char* data = bytes.data() + end + 11;
+  REQUIRE(bytes.size() >= end + 11 + vertices * stride);
+  for (std::size_t v = 0; v < vertices; ++v) std::memcpy(&out[v], data + v * stride + offset, 4);
+  return out;
 }
 
 }  // namespace testing

@@ -50,4 +50,7 @@ bool closed_and_consistent(const ReadMesh& mesh, bool manifold = true);
 // are oriented outward.
 double signed_volume(const ReadMesh& mesh);
 
+// The per-vertex integer property `site` of a binary PLY file (REQUIREs it).
+std::vector<int> vertex_sites(const std::filesystem::path& file);
+
 }  // namespace testing

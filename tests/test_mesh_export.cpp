@@ -103,6 +103,7 @@ TEST_CASE("mesh export: random shapes keep orientation and volume", "[mesh_expor
       CHECK(back.n_faces() == m.triangles.size());
       // The boundary of a union of tetrahedra is closed, whether or not it is a manifold.
       CHECK(closed_and_consistent(back, false));
+
       // Coordinates are stored as floats.
       CHECK(signed_volume(back) == Approx(a.volume(level)).epsilon(1e-6));
     }
@@ -163,7 +164,7 @@ TEST_CASE("mesh export: any triangle soup is written whole", "[mesh_export]") {
   CHECK(back.n_vertices() == info.vertices);
 }
 
-TEST_CASE("mesh export: face colours in PLY and OFF", "[mesh_export]") {
+TEST_CASE("mesh export: face colours in PLY, OFF and OBJ (its .mtl)", "[mesh_export]") {
   molecule::TriangleMesh m;
   m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 5, 5}};  // the last one unused
   m.triangles = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -184,14 +185,18 @@ TEST_CASE("mesh export: face colours in PLY and OFF", "[mesh_export]") {
     }
     CHECK(colors == std::vector<std::array<int, 3>>{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {10, 20, 30}});
   }
-  // Formats without face colours still write the mesh, and only that file.
-  for (const std::string name : {"plain.obj", "plain.stl"}) {
-    CAPTURE(name);
-    const molecule::MeshFileInfo info = molecule::write_mesh_file((dir / name).string(), m);
-    CHECK_FALSE(info.colors);
-    CHECK(read_back(dir / name).n_faces() == 4);
-  }
-  CHECK(dir.files() == std::vector<std::string>{"colored.off", "colored.ply", "plain.obj", "plain.stl"});
+  // OBJ: a material per colour in the .mtl beside it, which OpenMesh reads back.
+  CHECK(molecule::write_mesh_file((dir / "colored.obj").string(), m).colors);
+  const std::string mtl = testing::read_text(dir / "colored.mtl");
+  CHECK(std::count(mtl.begin(), mtl.end(), '\n') == 16);  // 4 materials of 4 lines
+  CHECK(mtl.find("Kd 0.03922 0.07843 0.1176") != std::string::npos);
+  CHECK(testing::read_text(dir / "colored.obj").find("mtllib colored.mtl\n") != std::string::npos);
+  CHECK(read_back(dir / "colored.obj").n_faces() == 4);
+  // STL has no colours: it still writes the mesh, and only that file.
+  const molecule::MeshFileInfo info = molecule::write_mesh_file((dir / "plain.stl").string(), m);
+  CHECK_FALSE(info.colors);
+  CHECK(read_back(dir / "plain.stl").n_faces() == 4);
+  CHECK(dir.files() == std::vector<std::string>{"colored.mtl", "colored.obj", "colored.off", "colored.ply", "plain.stl"});
 }
 
 TEST_CASE("mesh export: errors leave no file behind", "[mesh_export]") {

@@ -23,7 +23,6 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
-#include "molecule/cavity_mesh.hpp"
 #include "molecule/pocket_colors.hpp"
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
@@ -219,7 +218,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   CHECK(mol["voids"] == cav.voids.size());
   CHECK(mol["sites"] == cav.sites.size());
   CHECK(mol["tunnels"] == cav.tunnels.size());
-  CHECK(mol["mesh"] == "meshes/molecule.ply");
+  CHECK(mol["mesh"] == "meshes/surface.ply");
 
   REQUIRE_FALSE(cav.pockets.empty());  // 1A26 has its ligand's pocket, at least
   check_cavities(j["pockets"], cav.pockets, "pocket", r.structure);
@@ -290,36 +289,43 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
   }
 }
 
-TEST_CASE("pockets outputs: meshes are closed, oriented outward from the cavity, coloured by site",
+TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of the reported volumes, coloured by site",
           "[pocket_outputs]") {
   const Run& r = the_run();
-  const alpha::Triangulation& t = *r.search.triangulation;
   const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
+  const molecule::CavityRanks ranks = molecule::cavity_ranks(r.search.cavities);
   auto check_list = [&](const std::vector<molecule::Cavity>& list, const std::vector<molecule::Rgb>& color,
-                        const std::string& kind) {
+                        const std::vector<std::size_t>& rank, const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const molecule::Cavity& c = list[i];
-      INFO(kind << " " << i + 1);
+      INFO(kind << " " << i + 1 << ": ms_volume " << c.ms_volume);
       const ReadMesh mesh = testing::read_back(r.file(molecule::cavity_mesh_path(kind, i + 1, "ply")), true);
-      CHECK(testing::closed_and_consistent(mesh, false));
-      // Outward from the cavity: the enclosed volume is that of its tetrahedra.
-      const double volume = cells_volume(t, c.cells);
-      CHECK(testing::signed_volume(mesh) == Approx(volume).epsilon(1e-4));
-      std::size_t mouth_triangles = 0;
-      for (const molecule::Mouth& m : c.mouths) mouth_triangles += m.triangles.size();
-      const auto [plain, tinted] = count_colors(mesh, color.at(i));
-      CHECK(tinted == mouth_triangles);
-      CHECK(plain + tinted == mesh.n_faces());
+      CHECK(testing::closed_and_consistent(mesh));
+      // The cast holds the cavity's space as the molecular surface bounds
+      // it: ms_volume, up to its split by fractional shares (exact only in
+      // sum), which small cavities feel most.
+      CHECK(testing::signed_volume(mesh) == Approx(c.ms_volume).epsilon(c.ms_volume >= 150 ? 0.02 : 0.15));
+      CHECK(count_colors(mesh, color.at(i)).first == mesh.n_faces());
+      const auto sites = testing::vertex_sites(r.file(molecule::cavity_mesh_path(kind, i + 1, "ply")));
+      CHECK(std::count(sites.begin(), sites.end(), int(rank.at(i))) == long(sites.size()));
     }
   };
-  check_list(r.search.cavities.pockets, colors.pockets, "pocket");
-  check_list(r.search.cavities.voids, colors.voids, "void");
+  check_list(r.search.cavities.pockets, colors.pockets, ranks.pockets, "pocket");
+  check_list(r.search.cavities.voids, colors.voids, ranks.voids, "void");
 
-  const ReadMesh molecule_mesh = testing::read_back(r.file("meshes/molecule.ply"), true);
-  CHECK(testing::closed_and_consistent(molecule_mesh, false));
-  const alpha::AlphaComplex& ac = *r.search.complex;
-  CHECK(testing::signed_volume(molecule_mesh) == Approx(ac.volume(ac.level(0))).epsilon(1e-4));
-  CHECK(count_colors(molecule_mesh, molecule::kMoleculeColor).first == molecule_mesh.n_faces());
+  const ReadMesh surface = testing::read_back(r.file("meshes/surface.ply"), true);
+  CHECK(testing::closed_and_consistent(surface));
+  // examples/data/1a26A.pdb's molecular volume (README, surface --json).
+  CHECK(testing::signed_volume(surface) == Approx(44941.63).epsilon(0.01));
+  // Every site is painted on it, with its rank as the vertices' site.
+  const auto sites = testing::vertex_sites(r.file("meshes/surface.ply"));
+  REQUIRE(sites.size() == surface.n_vertices());
+  for (std::size_t k = 1; k <= r.search.cavities.sites.size(); ++k) {
+    INFO("site " << k);
+    CHECK(std::count(sites.begin(), sites.end(), int(k)) > 0);
+    CHECK(count_colors(surface, molecule::rank_color(k)).first > 0);
+  }
+  CHECK(std::count(sites.begin(), sites.end(), 0) > long(sites.size() / 2));  // grey elsewhere
 }
 
 TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other voids", "[pocket_outputs]") {
@@ -510,60 +516,6 @@ TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavi
   }
 }
 
-TEST_CASE("pockets outputs: a unit cube of a grid as a void and as a pocket", "[pocket_outputs]") {
-  // 4x4x4 grid: every cube's 8 corners are cospherical (degenerate input).
-  const alpha::Triangulation t(testing::grid_points(4));
-  const alpha::AlphaComplex ac(t);
-  const auto cube_cells = [&](double lo) {
-    std::vector<alpha::Index> cells;
-    for (alpha::Index c = 0; c < t.num_cells(); ++c) {
-      if (t.is_infinite(c)) continue;
-      alpha::Vec3 g{};
-      for (const alpha::Index v : t.cell(c).v) g.x += t.point(v).x / 4, g.y += t.point(v).y / 4, g.z += t.point(v).z / 4;
-      if (g.x > lo && g.x < lo + 1 && g.y > lo && g.y < lo + 1 && g.z > lo && g.z < lo + 1) cells.push_back(c);
-    }
-    return cells;
-  };
-  const molecule::Rgb red{200, 10, 10};
-  TempDir dir;
-
-  SECTION("the centre cube, closed: a void") {
-    molecule::Cavity c;
-    c.cells = cube_cells(1);
-    const molecule::TriangleMesh m = molecule::cavity_mesh(ac, c, red);
-    CHECK(m.triangles.size() == 12);  // 6 squares
-    REQUIRE(m.face_colors.size() == 12);
-    molecule::write_mesh_file((dir / "void.ply").string(), m);
-    const ReadMesh back = testing::read_back(dir / "void.ply", true);
-    CHECK(testing::closed_and_consistent(back));
-    CHECK(testing::signed_volume(back) == Approx(1.0));
-    CHECK(count_colors(back, red).first == 12);
-  }
-  SECTION("the corner cube, open on the hull: a pocket with its mouth tinted") {
-    molecule::Cavity c;
-    c.cells = cube_cells(0);
-    molecule::Mouth mouth;
-    for (const alpha::Index cell : c.cells)
-      for (int k = 0; k < 4; ++k)
-        if (t.is_infinite(t.cell(cell).n[k])) mouth.triangles.push_back(ac.simplices().cell_triangle(cell, k));
-    REQUIRE(mouth.triangles.size() == 6);  // the 3 squares on the hull
-    c.mouths.push_back(mouth);
-    molecule::write_mesh_file((dir / "pocket.off").string(), molecule::cavity_mesh(ac, c, red));
-    const ReadMesh back = testing::read_back(dir / "pocket.off", true);
-    CHECK(testing::closed_and_consistent(back));
-    CHECK(testing::signed_volume(back) == Approx(1.0));
-    const auto [plain, tinted] = count_colors(back, red);
-    CHECK(plain == 6);
-    CHECK(tinted == 6);
-  }
-  SECTION("an infinite cell is refused") {
-    molecule::Cavity c;
-    for (alpha::Index cell = 0; cell < t.num_cells() && c.cells.empty(); ++cell)
-      if (t.is_infinite(cell)) c.cells.push_back(cell);
-    CHECK_THROWS_AS(molecule::cavity_mesh(ac, c, red), alpha::Error);
-  }
-}
-
 TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocket_outputs]") {
   molecule::Structure s;
   const auto atom = [](int serial, const char* chain, const char* res, int num, char icode) {
@@ -659,14 +611,15 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   const Run& r = the_run();
   TempDir dir;
   fs::create_directories(dir / "out/meshes");
-  for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.obj"})
+  for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.ply", "surface.obj"})
     std::ofstream(dir / ("out/meshes/" + std::string(name))) << "old";
   std::ofstream(dir / "out/tunnels.csv") << "old";
   molecule::PocketRun run = r.run;
   run.mesh_format = "obj";
   run.paths = nullptr;  // no tunnel files this time
   const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string()).write(run);
-  CHECK(std::count(written.begin(), written.end(), "meshes/molecule.obj") == 1);
+  CHECK(std::count(written.begin(), written.end(), "meshes/surface.obj") == 1);
+  CHECK(std::count(written.begin(), written.end(), "meshes/surface.mtl") == 1);
   CHECK(std::count(written.begin(), written.end(), "tunnels.csv") == 0);
   // Exactly the files written, none of the earlier run's, nothing beside.
   std::vector<std::string> files;
@@ -676,7 +629,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   std::sort(files.begin(), files.end());
   std::sort(expected.begin(), expected.end());
   CHECK(files == expected);
-  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
+  CHECK(testing::read_text(dir / "out/meshes/surface.obj") != "old");
   CHECK(dir.files() == std::vector<std::string>{"out"});
 
   // Anything else in it (a file of another name, a directory where a file
@@ -688,7 +641,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   molecule::PocketOutputDir out((dir / "out").string());
   fs::create_directory(dir / "out/report.json.d");
   CHECK_THROWS_WITH(out.write(run), Catch::Contains("('report.json.d')"));
-  CHECK(testing::read_text(dir / "out/meshes/molecule.obj") != "old");
+  CHECK(testing::read_text(dir / "out/meshes/surface.obj") != "old");
   CHECK(dir.files() == std::vector<std::string>{"out"});
 }
 
@@ -698,14 +651,14 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
   molecule::PocketOutputDir out((dir / "out").string());
   out.write(r.run);
   // A directory where a file of ours goes appears while the run works.
-  fs::remove(dir / "out/meshes/molecule.ply");
-  fs::create_directory(dir / "out/meshes/molecule.ply");
+  fs::remove(dir / "out/meshes/surface.ply");
+  fs::create_directory(dir / "out/meshes/surface.ply");
   std::map<std::string, std::string> before;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) before[e.path().string()] = testing::read_text(e.path());
   molecule::PocketRun other = r.run;
   other.version = "other";
-  CHECK_THROWS_WITH(out.write(other), Catch::Contains("meshes/molecule.ply"));
+  CHECK_THROWS_WITH(out.write(other), Catch::Contains("meshes/surface.ply"));
   std::map<std::string, std::string> after;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) after[e.path().string()] = testing::read_text(e.path());

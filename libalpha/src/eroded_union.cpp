@@ -29,6 +29,7 @@ constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between tw
 constexpr double kMaxPiece = kPi / 4;
 
 using Arc = ErodedUnion::Arc;
+using Nearest = ErodedUnion::Nearest;
 
 double wrap(double a) {
   a = std::fmod(a, kTwoPi);
@@ -212,9 +213,71 @@ struct LayerSum {
 
 }  // namespace
 
+// What can be within reach of a point (2r of a piece): balls whose sphere
+// comes near, the circles of edges of K between them, boundary vertices.
+struct ErodedUnion::Nearby::Hood {
+  struct Ball {
+    Vec3 c;
+    double radius, radius_sq;
+    Index id;
+    mutable Index cover = kNone;  // see on_boundary
+  };
+  std::vector<Ball> balls;  // by id
+  std::vector<std::pair<Index, Circle>> circles;
+  std::vector<std::size_t> vertices;
+  std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
+};
+
 // The integrals of the pieces of one ErodedUnion.
 class ErodedUnion::Integrator {
+  friend class ErodedUnion;  // nearby() gathers
+
 public:
+  using Hood = Nearby::Hood;
+
+  // The nearest point of F to x, if nearer than limit (see Nearest): on a
+  // sphere whose ball holds x (x's radial projection, kept when on the
+  // boundary), on an arc (the circle's nearest point, kept when on an
+  // arc) or a boundary vertex; the nearest of these is the nearest point.
+  Nearest nearest(const Hood& h, const Vec3& x, double limit) const {
+    using On = Nearest::On;
+    Nearest best{On::far, limit, x, kNone};
+    bool in_union = false;
+    for (const Hood::Ball& b : h.balls) {
+      const Vec3 d = x - b.c;
+      const double dd = dot(d, d);
+      if (dd >= b.radius_sq) continue;
+      in_union = true;
+      const double rd = std::sqrt(dd), dist = b.radius - rd;
+      if (dist >= limit) return best;  // F lies outside this ball: at least dist away
+      if (dist >= best.distance || rd == 0) continue;
+      const Vec3 q = b.c + (b.radius / rd) * d;
+      if (on_boundary(b.id, q, b.cover)) best = {On::sphere, dist, q, b.id};
+    }
+    for (std::size_t k = 0; k < h.buried.size() && !in_union; ++k)
+      in_union = dot(x - h.buried[k].first, x - h.buried[k].first) < h.buried[k].second;
+    if (!in_union) return {On::outside, 0, x, kNone};
+    for (const auto& [e, c] : h.circles) {
+      const Vec3 y = x - c.o;
+      const double z = dot(y, c.w);
+      if (std::fabs(z) >= best.distance) continue;
+      const Vec3 perp = y - z * c.w;
+      const double s = std::sqrt(dot(perp, perp));
+      const double dist = std::sqrt((s - c.rho) * (s - c.rho) + z * z);
+      if (dist >= best.distance) continue;
+      const double px = s > 0 ? dot(perp, c.e1) / s : eu_.arc_ends_[eu_.arc_start_[e]].cos_begin;
+      const double py = s > 0 ? dot(perp, c.e2) / s : eu_.arc_ends_[eu_.arc_start_[e]].sin_begin;
+      if (contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], px, py))
+        best = {On::circle, dist, c.o + c.rho * (px * c.e1 + py * c.e2), e};
+    }
+    for (const std::size_t v : h.vertices) {
+      const double dist = norm(x - eu_.vertices_[v].p);
+      if (dist < best.distance) best = {On::vertex, dist, eu_.vertices_[v].p, Index(v)};
+    }
+    return best;
+  }
+
+
   explicit Integrator(const ErodedUnion& eu)
       : eu_(eu), t_(eu.balls_->complex().triangulation()), s_(eu.balls_->complex().simplices()), r_(eu.r_),
         tol_(eu.tolerance_) {}
@@ -314,20 +377,6 @@ public:
   }
 
 private:
-  // What can be within 2r of a piece: balls whose sphere comes near, the
-  // circles of edges of K between them, boundary vertices.
-  struct Hood {
-    struct Ball {
-      Vec3 c;
-      double radius, radius_sq;
-      Index id;
-      mutable Index cover = kNone;  // see on_boundary
-    };
-    std::vector<Ball> balls;  // by id
-    std::vector<std::pair<Index, Circle>> circles;
-    std::vector<std::size_t> vertices;
-  };
-
   const ErodedUnion& eu_;
   const Triangulation& t_;
   const Simplices& s_;
@@ -377,11 +426,15 @@ private:
     const double radius = reach + r_ + tol_;
     Hood h;
     // Balls whose sphere is within radius: the ends of the circles.
-    // Buried balls are left out: a point inside one is inside another.
+    // Buried balls are left out of the pieces (a point inside one is
+    // inside another, up to rounding), kept apart for nearest().
     std::vector<Index> ids;
     eu_.ball_grid_.visit(center, radius + eu_.max_radius_, [&](Index k) {
-      if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + radius && eu_.balls_->ball_areas()[k] > 0)
+      if (norm(t_.point(k) - center) >= std::sqrt(t_.weight(k)) + radius) return;
+      if (eu_.balls_->ball_areas()[k] > 0)
         ids.push_back(k);
+      else if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + reach + tol_)
+        h.buried.emplace_back(t_.point(k), t_.weight(k));
     });
     std::sort(ids.begin(), ids.end());
     for (Index k : ids) {
@@ -735,6 +788,115 @@ LayerShare ErodedUnion::cell_share(Index c) const {
       if (vertices_[p].cell == c) sum.add(in.cone(p));
   }
   return sum.value();
+}
+
+}  // namespace alpha
+
+namespace alpha {
+
+ErodedUnion::Nearby::Nearby(const ErodedUnion& eu, std::unique_ptr<Hood> hood) : eu_(&eu), hood_(std::move(hood)) {}
+ErodedUnion::Nearby::Nearby(Nearby&&) noexcept = default;
+ErodedUnion::Nearby& ErodedUnion::Nearby::operator=(Nearby&&) noexcept = default;
+ErodedUnion::Nearby::~Nearby() = default;
+
+ErodedUnion::Nearby ErodedUnion::nearby(const Vec3& center, double reach) const {
+  return Nearby(*this, std::make_unique<Nearby::Hood>(Integrator(*this).gather(center, reach)));
+}
+
+ErodedUnion::Nearest ErodedUnion::Nearby::nearest(const Vec3& x, double limit) const {
+  return Integrator(*eu_).nearest(*hood_, x, limit);
+}
+
+double ErodedUnion::Nearby::outside_by(const Vec3& x) const {
+  double d = HUGE_VAL;
+  for (const Hood::Ball& b : hood_->balls) d = std::min(d, norm(x - b.c) - b.radius);
+  for (const auto& [c, w] : hood_->buried) d = std::min(d, norm(x - c) - std::sqrt(w));
+  return d;
+}
+
+namespace {
+
+// Whether x lies on the inner side (that of the opposite vertex) of each
+// facet k of finite cell c with bit k set in `facets`.
+bool inside_facets(const Triangulation& t, Index c, const Vec3& x, unsigned facets) {
+  const auto& v = t.cell(c).v;
+  for (int k = 0; k < 4; ++k) {
+    if (!(facets >> k & 1)) continue;
+    const auto& f = kFacet[k];
+    const Vec3 a = t.point(v[f[0]]), ab = t.point(v[f[1]]) - a, ac = t.point(v[f[2]]) - a;
+    const Vec3 n = cross(ab, ac);
+    const double side = dot(n, x - a), inner = dot(n, t.point(v[k]) - a);
+    if (side * inner < 0) return false;
+  }
+  return true;
+}
+
+// The cell holding x by a visibility walk from `start` (floating-point
+// sides: a point on a facet may go to either cell); an infinite cell when
+// x lies beyond the hull.
+Index locate(const Triangulation& t, const Vec3& x, Index start) {
+  Index c = start;
+  if (t.is_infinite(c)) c = t.cell(c).n[t.infinite_position(c)];
+  for (std::size_t step = 0; step < 4 * t.num_cells() + 8; ++step) {
+    if (t.is_infinite(c)) return c;
+    Index next = kNone;
+    for (int i = 0; i < 4 && next == kNone; ++i) {
+      const int k = int((i + step) % 4);  // rotating start: no cycling on a flat cell
+      if (!inside_facets(t, c, x, 1u << k)) next = t.cell(c).n[k];
+    }
+    if (next == kNone) return c;
+    c = next;
+  }
+  return c;
+}
+
+}  // namespace
+
+Index ErodedUnion::share_cell(const Vec3& x, const Nearest& n, Index hint) const {
+  const AlphaComplex& ac = balls_->complex();
+  const Triangulation& t = ac.triangulation();
+  const Simplices& s = ac.simplices();
+  using On = Nearest::On;
+  switch (n.on) {
+    case On::far:
+      return kNone;
+    case On::vertex:
+      return vertices_[n.which].cell;
+    case On::outside:
+      return locate(t, x, hint != kNone ? hint : 0);
+    case On::sphere:
+    case On::circle: {
+      // The cells around the ball's vertex (the edge): their cones (wedges)
+      // there are bounded by the facets through it.
+      const auto around = [&](auto&& visit_edges) {
+        Index any = kNone;
+        Index found = kNone;
+        visit_edges([&](Index e) {
+          for (Index f : s.edge_triangles(e))
+            for (Index c : s.triangle_cells(f)) {
+              if (found != kNone) return;
+              if (t.is_infinite(c)) {
+                any = c;
+                continue;
+              }
+              unsigned facets = 0;  // the facets through the feature: those opposite the other vertices
+              for (int k = 0; k < 4; ++k) {
+                const Index v = t.cell(c).v[k];
+                const bool feature = n.on == On::sphere ? v == n.which : v == s.edge(n.which)[0] || v == s.edge(n.which)[1];
+                if (!feature) facets |= 1u << k;
+              }
+              if (inside_facets(t, c, n.point, facets)) found = c;
+            }
+        });
+        return found != kNone ? found : any;
+      };
+      if (n.on == On::circle) return around([&](auto f) { f(n.which); });
+      return around([&](auto f) {
+        for (Index e : s.vertex_edges(n.which)) f(e);
+      });
+    }
+  }
+  return kNone;
 }
 
 }  // namespace alpha

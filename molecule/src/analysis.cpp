@@ -20,6 +20,7 @@ PocketRun Analysis::run() const {
   r.version = options.version;
   r.search = &search;
   r.mesh_format = options.outputs.meshes ? options.mesh_format : "";
+  r.mesh_resolution = options.mesh_resolution;
   r.min_plddt = options.structure.min_plddt;
   if (!options.radii_file.empty()) r.radii = options.radii_file;
   r.paths = &paths;

@@ -2,6 +2,7 @@
 #include "molecule/mesh_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <mutex>
@@ -36,7 +37,7 @@ struct Format {
 constexpr Format kFormats[] = {
     {"ply", true, true},
     {"off", false, true},
-    {"obj", false, false},
+    {"obj", false, true},  // by obj_with_materials
     {"stl", true, false},
 };
 // Significant digits of ASCII coordinates: enough to read back every float exactly.
@@ -89,6 +90,8 @@ void check_input(const std::string& path, const TriangleMesh& in) {
   if (!in.face_colors.empty() && in.face_colors.size() != in.triangles.size())
     alpha::fail(path + ": " + std::to_string(in.face_colors.size()) + " face colours for " +
                 std::to_string(in.triangles.size()) + " triangles");
+  if ((!in.vertex_colors.empty() && in.vertex_colors.size() != n) || (!in.vertex_sites.empty() && in.vertex_sites.size() != n))
+    alpha::fail(path + ": vertex colours or sites do not match the " + std::to_string(n) + " points");
   for (std::size_t f = 0; f < in.triangles.size(); ++f) {
     const auto& t = in.triangles[f];
     for (alpha::Index v : t)
@@ -137,9 +140,32 @@ std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copi
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    if (j - i == 2) {
-      const std::size_t c = edges[i].corner, d = edges[i + 1].corner;
-      if (vertex(c) == vertex(next(d))) {  // manifold: a->b in one triangle, b->a in the other
+    // Around an edge of more than two triangles (solids meeting at an
+    // edge only) they alternate in direction by angle: pair each with the
+    // next, so that every copy of the edge joins two triangles.
+    std::vector<Edge> around(edges.begin() + i, edges.begin() + j);
+    if (around.size() > 2) {
+      const alpha::Vec3 a = in.points[around[0].lo], axis = in.points[around[0].hi] - a;
+      alpha::Vec3 e1 = alpha::cross(axis, std::fabs(axis.x) <= std::fabs(axis.y) ? alpha::Vec3{1, 0, 0} : alpha::Vec3{0, 1, 0});
+      const alpha::Vec3 e2 = alpha::cross(axis, e1);
+      const auto angle = [&](const Edge& x) {
+        const alpha::Vec3 d = in.points[vertex(next(next(x.corner)))] - a;
+        return std::atan2(alpha::dot(d, e2), alpha::dot(d, e1));
+      };
+      std::stable_sort(around.begin(), around.end(), [&](const Edge& x, const Edge& y) { return angle(x) < angle(y); });
+      // Pair the two triangles of each solid wedge (the sheets stay apart):
+      // start where the first triangle's outward normal points back from
+      // the turn, i.e. the wedge ahead of it is inside.
+      const Edge& first = around[0];
+      const alpha::Vec3 p0 = in.points[vertex(first.corner)], p1 = in.points[vertex(next(first.corner))],
+                        p2 = in.points[vertex(next(next(first.corner)))];
+      const alpha::Vec3 normal = alpha::cross(p1 - p0, p2 - p0);
+      const alpha::Vec3 d = p2 - a, ahead = alpha::cross(axis, d - (alpha::dot(d, axis) / alpha::dot(axis, axis)) * axis);
+      if (alpha::dot(normal, ahead) > 0) std::rotate(around.begin(), around.begin() + 1, around.end());
+    }
+    for (std::size_t k = 0; k + 1 < around.size(); k += 2) {
+      const std::size_t c = around[k].corner, d = around[k + 1].corner;
+      if (vertex(c) == vertex(next(d))) {  // a->b in one triangle, b->a in the other
         unite(c, next(d));
         unite(next(c), d);
       }
@@ -159,14 +185,29 @@ std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copi
   return copy;
 }
 
-// The OpenMesh mesh of the triangles and the points they use.
-Mesh build_mesh(const std::string& path, const TriangleMesh& in, bool colors, MeshFileInfo& info) {
+// The OpenMesh mesh of the triangles and the points they use, with the
+// colours and sites asked for.
+Mesh build_mesh(const std::string& path, const TriangleMesh& in, const OpenMesh::IO::Options& options,
+                MeshFileInfo& info) {
   std::size_t copies = 0;
   const std::vector<std::size_t> copy = corner_copies(in, copies);
   Mesh mesh;
+  const bool face_colors = options.check(OpenMesh::IO::Options::FaceColor);
+  const bool vertex_colors = options.check(OpenMesh::IO::Options::VertexColor);
+  const bool sites = options.check(OpenMesh::IO::Options::Custom);
+  if (face_colors) mesh.request_face_colors();
+  if (vertex_colors) mesh.request_vertex_colors();
+  OpenMesh::VPropHandleT<int> site;
+  if (sites) {
+    mesh.add_property(site, "site");
+    mesh.property(site).set_persistent(true);
+  }
   auto add_vertex = [&](alpha::Index v) {
     const alpha::Vec3& p = in.points[v];
-    return mesh.add_vertex(Mesh::Point(float(p.x), float(p.y), float(p.z)));
+    const Mesh::VertexHandle h = mesh.add_vertex(Mesh::Point(float(p.x), float(p.y), float(p.z)));
+    if (vertex_colors) mesh.set_color(h, Mesh::Color(in.vertex_colors[v].r, in.vertex_colors[v].g, in.vertex_colors[v].b));
+    if (sites) mesh.property(site, h) = in.vertex_sites[v];
+    return h;
   };
   std::vector<alpha::Index> point_of(copies);
   for (std::size_t c = 0; c < copy.size(); ++c) point_of[copy[c]] = in.triangles[c / 3][c % 3];
@@ -177,7 +218,6 @@ Mesh build_mesh(const std::string& path, const TriangleMesh& in, bool colors, Me
     for (alpha::Index v : t) used[v] = 1;
   const std::size_t used_points = std::size_t(std::count(used.begin(), used.end(), 1));
 
-  if (colors) mesh.request_face_colors();
   for (std::size_t f = 0; f < in.triangles.size(); ++f) {
     Mesh::FaceHandle fh = mesh.add_face(handle[copy[3 * f]], handle[copy[3 * f + 1]], handle[copy[3 * f + 2]]);
     if (!fh.is_valid()) {  // still refused (not seen so far): a separate triangle
@@ -185,7 +225,7 @@ Mesh build_mesh(const std::string& path, const TriangleMesh& in, bool colors, Me
       fh = mesh.add_face(add_vertex(t[0]), add_vertex(t[1]), add_vertex(t[2]));
       if (!fh.is_valid()) alpha::fail(path + ": OpenMesh refused triangle " + std::to_string(f));
     }
-    if (colors) {
+    if (face_colors) {
       const Rgb& c = in.face_colors[f];
       mesh.set_color(fh, Mesh::Color(c.r, c.g, c.b));
     }
@@ -194,6 +234,53 @@ Mesh build_mesh(const std::string& path, const TriangleMesh& in, bool colors, Me
   info.faces = mesh.n_faces();
   info.duplicated_vertices = info.vertices - used_points;
   return mesh;
+}
+
+// Wavefront OBJ with its faces grouped by colour, each colour a material
+// of the .mtl file `mtl_name` (none when there are no colours).
+std::string obj_with_materials(const TriangleMesh& in, const std::string& mtl_name, std::string& mtl,
+                               MeshFileInfo& info) {
+  std::ostringstream out;
+  out.precision(kAsciiPrecision);
+  out << "# alphapocket\n";
+  // One vertex per fan, as in the other formats (build_mesh).
+  std::size_t copies = 0;
+  const std::vector<std::size_t> copy = corner_copies(in, copies);
+  std::vector<alpha::Index> point_of(copies);
+  for (std::size_t c = 0; c < copy.size(); ++c) point_of[copy[c]] = in.triangles[c / 3][c % 3];
+  for (const alpha::Index v : point_of) {
+    const alpha::Vec3& p = in.points[v];
+    out << "v " << float(p.x) << ' ' << float(p.y) << ' ' << float(p.z) << '\n';
+  }
+  const auto face = [&](std::size_t f) {
+    out << "f " << copy[3 * f] + 1 << ' ' << copy[3 * f + 1] + 1 << ' ' << copy[3 * f + 2] + 1 << '\n';
+  };
+  std::vector<Rgb> materials;  // in order of first use
+  std::vector<std::size_t> material_of(in.triangles.size(), 0);
+  for (std::size_t f = 0; f < in.face_colors.size(); ++f) {
+    auto it = std::find(materials.begin(), materials.end(), in.face_colors[f]);
+    if (it == materials.end()) it = materials.insert(materials.end(), in.face_colors[f]);
+    material_of[f] = std::size_t(it - materials.begin());
+  }
+  if (!materials.empty()) out << "mtllib " << mtl_name << '\n';
+  std::ostringstream m;
+  m.precision(4);
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    m << "newmtl color_" << k << "\nKd " << materials[k].r / 255.0 << ' ' << materials[k].g / 255.0 << ' '
+      << materials[k].b / 255.0 << "\nKa 0 0 0\nillum 1\n";
+    out << "usemtl color_" << k << '\n';
+    for (std::size_t f = 0; f < in.triangles.size(); ++f)
+      if (material_of[f] == k) face(f);
+  }
+  if (materials.empty())
+    for (std::size_t f = 0; f < in.triangles.size(); ++f) face(f);
+  mtl = std::move(m).str();
+  std::vector<char> used(in.points.size(), 0);
+  for (const alpha::Index v : point_of) used[v] = 1;
+  info.vertices = copies;
+  info.duplicated_vertices = copies - std::size_t(std::count(used.begin(), used.end(), 1));
+  info.faces = in.triangles.size();
+  return std::move(out).str();
 }
 
 }  // namespace
@@ -209,20 +296,30 @@ MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& m
   MeshFileInfo& info = file.info;
   info.format = format->name;
   info.binary = format->binary;
-  info.colors = format->colors && !mesh.face_colors.empty();
-
   check_input(path, mesh);
+  const bool ply = info.format == "ply";
+  if (info.format == "obj") {
+    info.colors = !mesh.face_colors.empty();
+    if (info.colors) file.companion_path = fs::path(path).replace_extension(".mtl").string();
+    file.bytes = obj_with_materials(mesh, fs::path(file.companion_path).filename().string(), file.companion, info);
+    return file;
+  }
+  OpenMesh::IO::Options options;
+  if (format->binary) options += OpenMesh::IO::Options::Binary;
+  if (format->binary) options += OpenMesh::IO::Options::LSB;
+  if (format->colors && !mesh.vertex_colors.empty()) options += OpenMesh::IO::Options::VertexColor;
+  // OFF holds one kind of colour: the vertices' when given.
+  if (format->colors && !mesh.face_colors.empty() && (ply || mesh.vertex_colors.empty()))
+    options += OpenMesh::IO::Options::FaceColor;
+  if (ply && !mesh.vertex_sites.empty()) options += OpenMesh::IO::Options::Custom;
+  info.colors = options.check(OpenMesh::IO::Options::VertexColor) || options.check(OpenMesh::IO::Options::FaceColor);
   std::ostringstream out(std::ios::binary);
   {
     // OpenMesh's writers and log streams are process-wide: one thread at a time.
     static std::mutex openmesh;
     const std::scoped_lock lock(openmesh);
     const QuietOpenMesh quiet;
-    const Mesh om = build_mesh(path, mesh, info.colors, info);
-    OpenMesh::IO::Options options;
-    if (format->binary) options += OpenMesh::IO::Options::Binary;
-    if (format->binary) options += OpenMesh::IO::Options::LSB;
-    if (info.colors) options += OpenMesh::IO::Options::FaceColor;
+    const Mesh om = build_mesh(path, mesh, options, info);
     if (!OpenMesh::IO::write_mesh(om, out, std::string(".") + format->name, options, kAsciiPrecision) || !out)
       alpha::fail(path + ": write error (" + format->name + ")");
   }
@@ -232,7 +329,10 @@ MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& m
 
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {
   const MeshFileContent file = mesh_file_content(path, mesh);
-  write_file_atomically(path, file.bytes);
+  if (file.companion_path.empty())
+    write_file_atomically(path, file.bytes);
+  else
+    write_files_atomically({{path, file.bytes}, {file.companion_path, file.companion}});
   return file.info;
 }
 

@@ -14,9 +14,9 @@
 #include "molecule/batch_inputs.hpp"
 #include "molecule/batch_tables.hpp"
 #include "molecule/staged_directory.hpp"
-#include "molecule/cavity_mesh.hpp"
 #include "molecule/mesh_export.hpp"
-#include "molecule/pocket_colors.hpp"
+#include "molecule/meshlab_project.hpp"
+#include "molecule/pocket_meshes.hpp"
 #include "molecule/pocket_pdb.hpp"
 #include "molecule/pymol_script.hpp"
 #include "molecule/chimerax_script.hpp"
@@ -53,7 +53,7 @@ constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "sites.csv", 
                                      "pockets.pdb", "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"};
 
 bool is_our_mesh(const std::string& name) {
-  static const std::regex kOurs(R"(((pocket|void)_[0-9]+|molecule)\.(ply|obj|off|stl))");
+  static const std::regex kOurs(R"(((pocket|void)_[0-9]+|surface|molecule)\.(ply|obj|mtl|off|stl)|meshlab\.mlp)");
   return std::regex_match(name, kOurs);
 }
 
@@ -194,17 +194,22 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     files.emplace_back("tunnels.pdb", std::move(tunnels.text));
   }
   if (selection_.meshes && !run.mesh_format.empty()) {
+    std::vector<std::string> names;
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
-      files.emplace_back(name, mesh_file_content((path_ / name).string(), mesh).bytes);
+      MeshFileContent file = mesh_file_content((path_ / name).string(), mesh);
+      files.emplace_back(name, std::move(file.bytes));
+      if (!file.companion_path.empty())
+        files.emplace_back(fs::relative(file.companion_path, path_).string(), std::move(file.companion));
+      names.push_back(fs::path(name).filename().string());
     };
-    const CavityColors colors = cavity_colors(cavities);
-    const auto meshes = [&](const std::vector<Cavity>& list, const std::vector<Rgb>& color, const std::string& kind) {
-      for (std::size_t i = 0; i < list.size(); ++i)
-        mesh_file(cavity_mesh_path(kind, i + 1, run.mesh_format), cavity_mesh(ac, list[i], color[i]));
-    };
-    meshes(cavities.pockets, colors.pockets, "pocket");
-    meshes(cavities.voids, colors.voids, "void");
-    mesh_file(molecule_mesh_path(run.mesh_format), molecule_mesh(ac));
+    const PocketMeshes meshes = pocket_meshes(*run.search, run.options.probe, run.mesh_resolution);
+    mesh_seconds_ = meshes.seconds;
+    mesh_file(molecule_mesh_path(run.mesh_format), meshes.surface);
+    for (std::size_t i = 0; i < meshes.pockets.size(); ++i)
+      mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format), meshes.pockets[i]);
+    for (std::size_t i = 0; i < meshes.voids.size(); ++i)
+      mesh_file(cavity_mesh_path("void", i + 1, run.mesh_format), meshes.voids[i]);
+    files.emplace_back(kMeshlabProject, meshlab_project(names));
   }
 
   check_ours();  // again: files may have appeared while the run worked

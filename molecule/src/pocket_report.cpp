@@ -269,7 +269,7 @@ std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const st
   return "meshes/" + kind + "_" + std::to_string(rank) + "." + format;
 }
 
-std::string molecule_mesh_path(const std::string& format) { return "meshes/molecule." + format; }
+std::string molecule_mesh_path(const std::string& format) { return "meshes/surface." + format; }
 
 json pocket_report(const PocketRun& run) {
   const StructureReport& r = run.structure->report;

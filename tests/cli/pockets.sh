@@ -25,7 +25,7 @@ summary_counts() {
 # CEN pseudo-atom and one mesh per pocket (and per void).
 expect_consistent() {  # DIR POCKETS VOIDS EXT
   local dir=$1 pockets=$2 voids=$3 ext=$4
-  for f in report.json pockets.csv pockets.pml pockets.cxc structure.cif pockets.pdb "meshes/molecule.$ext"; do
+  for f in report.json pockets.csv pockets.pml pockets.cxc structure.cif pockets.pdb "meshes/surface.$ext" meshes/meshlab.mlp; do
     [[ -s "$dir/$f" ]] || fail "$dir/$f missing or empty"
   done
   [[ $(($(wc -l <"$dir/pockets.csv") - 1)) -eq $pockets ]] || fail "pockets.csv: not $pockets rows"
@@ -60,7 +60,7 @@ case "$case_name" in
     grep -qF '"structure.cif"), "1a26A")' 1a26A_pockets/pockets.pml || fail "pockets.pml does not load structure.cif"
     grep -qx 'open structure.cif' 1a26A_pockets/pockets.cxc || fail "pockets.cxc does not open structure.cif"
     ! grep -qF "$tmp" 1a26A_pockets/pockets.pml 1a26A_pockets/pockets.cxc || fail "a script names an absolute path"
-    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 11 + pockets + voids + 1)) ]] || fail "unexpected files: $(tree_of .)"
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 11 + pockets + voids + 2)) ]] || fail "unexpected files: $(tree_of .)"
     ;;
   json)
     # --json: the report on one line, the same as report.json.
@@ -79,11 +79,13 @@ case "$case_name" in
     expect_success
     read -r pockets voids tunnels <<<"$(summary_counts)"
     expect_consistent "$tmp/o" "$pockets" "$voids" obj
-    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.obj$') ]] || fail "other meshes than .obj"
+    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.\(obj\|mtl\|mlp\)$') ]] || fail "other meshes than .obj"
+    grep -q '^mtllib surface.mtl$' "$tmp/o/meshes/surface.obj" || fail "surface.obj names no .mtl"
+    grep -q '^Kd ' "$tmp/o/meshes/surface.mtl" || fail "surface.mtl has no colours"
     run pockets "$pdb" -o "$tmp/o"
     expect_success
     expect_consistent "$tmp/o" "$pockets" "$voids" ply
-    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.ply$') ]] || fail "meshes of the first run left: $(ls "$tmp/o/meshes")"
+    [[ -z $(ls "$tmp/o/meshes" | grep -v '\.\(ply\|mlp\)$') ]] || fail "meshes of the first run left: $(ls "$tmp/o/meshes")"
     ;;
   min_volume)
     # A huge --min-volume drops every pocket and void: the outputs are

@@ -60,6 +60,8 @@
 // to them when no ball reaches outside the convex hull.
 #pragma once
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "alpha/point_grid.hpp"
@@ -84,6 +86,7 @@ public:
   ErodedUnion(const UnionOfBalls& balls, double r);
 
   double r() const { return r_; }
+  const UnionOfBalls& balls() const { return *balls_; }
 
   // The whole layer: every piece integrated (time proportional to the
   // union's boundary). The eroded body's volume is balls.volume() minus
@@ -92,6 +95,49 @@ public:
 
   // The share of cell c (see above); {} for an infinite cell.
   LayerShare cell_share(Index c) const;
+
+  // The point of F (the closure of the union's complement) nearest to a
+  // point x, and the piece of the union's boundary it lies on: x itself
+  // when x is outside the union; `far` when no point of F is nearer than
+  // the limit asked for (x deep inside).
+  struct Nearest {
+    enum class On : std::uint8_t { outside, sphere, circle, vertex, far } on = On::far;
+    double distance = 0;  // |x - point|; the limit for `far`
+    Vec3 point{};
+    Index which = kNone;  // the ball (sphere), the edge (circle) or the boundary vertex (vertex)
+  };
+
+  // Nearest-point queries about the points near `center`, with the
+  // boundary's pieces that can be within r of a point within `reach` of
+  // it gathered once: nearest(x, limit) needs |x - center| + limit - r <= reach.
+  class Nearby {
+  public:
+    // The nearest point of F to x, exact (up to rounding) when nearer than
+    // `limit` (see nearby()).
+    Nearest nearest(const Vec3& x, double limit) const;
+    // A lower bound of the distance from x to the union, exact when below
+    // reach - |x - center| (infinite when no ball comes within reach).
+    double outside_by(const Vec3& x) const;
+    Nearby(Nearby&&) noexcept;
+    Nearby& operator=(Nearby&&) noexcept;
+    ~Nearby();
+    struct Hood;  // defined where it is used
+
+  private:
+    friend class ErodedUnion;
+    Nearby(const ErodedUnion& eu, std::unique_ptr<Hood> hood);
+    const ErodedUnion* eu_;
+    std::unique_ptr<Hood> hood_;
+  };
+  Nearby nearby(const Vec3& center, double reach) const;
+
+  // The cell whose share (cell_share, and UnionOfBalls::cell_cover outside
+  // the union) counts the point x, whose nearest point of F is n: the cell
+  // holding x when x is outside the union, else the cell on whose side of
+  // the piece n.point lies (its cone at a sphere's centre, its wedge about
+  // an arc's edge, its side of a vertex's triangle). hint: a cell near x
+  // (kNone: any). kNone for `far` points; may be infinite.
+  Index share_cell(const Vec3& x, const Nearest& n, Index hint = kNone) const;
 
   struct Arc {
     double begin, length;  // radians about the circle's axis, begin in [0, 2 pi)

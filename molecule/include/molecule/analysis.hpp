@@ -57,6 +57,7 @@ struct AnalysisOptions {
   std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
   TunnelOptions tunnels;            // --tunnel-probe, --pores
   SiteRanking ranking = SiteRanking::probability;
+  double mesh_resolution = 0.5;     // triangle size of the meshes, A (pocket_meshes.hpp)
 };
 
 // Everything one structure produced; owns all of it.

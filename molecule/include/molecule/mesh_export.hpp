@@ -4,10 +4,13 @@
 //
 // The format follows the file extension (case-insensitive):
 //
-//   .ply  binary little-endian PLY; face colours
-//   .off  ASCII OFF; face colours
-//   .obj  ASCII Wavefront OBJ; no colours (OBJ keeps them in a separate .mtl
-//         file, which is not written)
+//   .ply  binary little-endian PLY; vertex and face colours, and the
+//         per-vertex integer property `site` when given
+//   .off  ASCII OFF; vertex colours, else face colours
+//   .obj  ASCII Wavefront OBJ; face colours as materials of a companion
+//         .mtl file of the same name (written here, not by OpenMesh,
+//         whose OBJ writer makes the .mtl only when it writes to a named
+//         file itself, which would break all-or-nothing writes)
 //   .stl  binary STL (with per-face normals); no colours
 //
 // Coordinates are single precision in every format (OpenMesh's writers
@@ -53,8 +56,12 @@ struct TriangleMesh {
   // Indices into points, counter-clockwise seen from outside: the normal
   // (b-a)x(c-a) points out.
   std::vector<std::array<alpha::Index, 3>> triangles;
-  // Empty, or one colour per triangle (written to PLY and OFF only).
+  // Empty, or one colour per triangle (PLY, OFF, OBJ).
   std::vector<Rgb> face_colors;
+  // Empty, or one per point: a colour (PLY, OFF) and an integer written as
+  // the PLY vertex property `site`.
+  std::vector<Rgb> vertex_colors;
+  std::vector<int> vertex_sites;
 };
 
 struct MeshFileInfo {
@@ -63,7 +70,7 @@ struct MeshFileInfo {
   std::size_t vertices = 0;             // vertices in the file
   std::size_t faces = 0;                // triangles in the file
   std::size_t duplicated_vertices = 0;  // vertices - points used: copies at non-manifold places
-  bool colors = false;                  // whether face colours were written
+  bool colors = false;                  // whether colours were written
 };
 
 // Throws alpha::Error, as write_mesh_file would, when the extension of
@@ -85,6 +92,9 @@ MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh);
 struct MeshFileContent {
   std::string bytes;
   MeshFileInfo info;
+  // A companion file to write with it (an OBJ's .mtl): its path (path's
+  // with another extension) and content; empty if none.
+  std::string companion_path, companion;
 };
 MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& mesh);
 

@@ -72,22 +72,34 @@ inline Rgb rank_color(std::size_t rank) {
   return hsv_color(hue, saturation, value);
 }
 
-// The colour of each pocket and void (indices as in Cavities): rank_color
-// of its site rank, then, for the voids that are not sites, of the ranks
-// that follow, in their list's order.
+// The colour rank of each pocket and void (indices as in Cavities): its
+// site rank, then, for the voids that are not sites, the ranks that
+// follow, in their list's order.
+struct CavityRanks {
+  std::vector<std::size_t> pockets, voids;
+};
+inline CavityRanks cavity_ranks(const Cavities& cavities) {
+  CavityRanks out{std::vector<std::size_t>(cavities.pockets.size()), std::vector<std::size_t>(cavities.voids.size())};
+  std::vector<bool> void_is_site(cavities.voids.size(), false);
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    (s.is_void ? out.voids : out.pockets).at(s.index) = ++rank;
+    if (s.is_void) void_is_site[s.index] = true;
+  }
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (!void_is_site[i]) out.voids[i] = ++rank;
+  return out;
+}
+
+// rank_color of each pocket's and void's colour rank.
 struct CavityColors {
   std::vector<Rgb> pockets, voids;
 };
 inline CavityColors cavity_colors(const Cavities& cavities) {
-  CavityColors out{std::vector<Rgb>(cavities.pockets.size()), std::vector<Rgb>(cavities.voids.size())};
-  std::vector<bool> void_is_site(cavities.voids.size(), false);
-  std::size_t rank = 0;
-  for (const Site& s : cavities.sites) {
-    (s.is_void ? out.voids : out.pockets).at(s.index) = rank_color(++rank);
-    if (s.is_void) void_is_site[s.index] = true;
-  }
-  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    if (!void_is_site[i]) out.voids[i] = rank_color(++rank);
+  const CavityRanks ranks = cavity_ranks(cavities);
+  CavityColors out;
+  for (std::size_t r : ranks.pockets) out.pockets.push_back(rank_color(r));
+  for (std::size_t r : ranks.voids) out.voids.push_back(rank_color(r));
   return out;
 }
 

@@ -10,8 +10,10 @@
 //   pockets.pml   PyMOL script (pymol_script)
 //   pockets.cxc   ChimeraX script (chimerax_script)
 //   pockets.pdb   cavity centres and sinks as pseudo-atoms (pocket_pdb)
-//   meshes/       pocket_<rank>.<fmt>, void_<rank>.<fmt> (cavity_mesh) and
-//                 molecule.<fmt> (molecule_mesh)
+//   meshes/       surface.<fmt> (the molecular surface), pocket_<rank>.<fmt>,
+//                 void_<rank>.<fmt> (the casts; pocket_meshes), an OBJ's
+//                 .mtl files, and meshlab.mlp, a MeshLab project opening
+//                 them all
 //   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv),
 //   tunnels.pdb   the tunnels and pores (tunnel_pdb)
 //
@@ -51,6 +53,8 @@ public:
   // What the last write() could not put in the files, one line each (e.g.
   // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
   const std::vector<std::string>& warnings() const { return warnings_; }
+  // Wall-clock seconds the last write() spent meshing.
+  double mesh_seconds() const { return mesh_seconds_; }
 
   // Writes the selected files, replacing the directory. Returns the names
   // written, relative to the directory.
@@ -65,6 +69,7 @@ private:
   std::filesystem::path target_;  // absolute, through a symbolic link
   TemporaryPaths* temporaries_;
   std::vector<std::string> warnings_;
+  double mesh_seconds_ = 0;
 
   void check_ours() const;
 };

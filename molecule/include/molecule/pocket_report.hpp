@@ -39,6 +39,7 @@ struct PocketRun {
   std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
   std::string tunnels_from = "auto";
   TunnelOptions tunnel_options;
+  double mesh_resolution = 0.5;  // lattice spacing of the meshes, A (pocket_meshes.hpp)
 };
 
 // Predicted models: the mean pLDDT (B-factor) of the residues of these
@@ -56,8 +57,8 @@ std::string residue_id(const Atom& atom);
 std::vector<alpha::Index> residues_of(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices);
 
 // Mesh file of a cavity inside the output directory, e.g.
-// "meshes/pocket_1.ply"; kind is "pocket" or "void". The molecule's is
-// "meshes/molecule.<format>".
+// "meshes/pocket_1.ply"; kind is "pocket" or "void". The molecular
+// surface's is "meshes/surface.<format>".
 std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format);
 std::string molecule_mesh_path(const std::string& format);
 

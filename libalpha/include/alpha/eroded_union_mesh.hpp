@@ -1,0 +1,49 @@
+// Triangle meshes of an eroded union (alpha/eroded_union.hpp): its
+// boundary (for the probe-inflated atoms of a molecule, the molecular or
+// solvent-excluded surface), and the space outside the eroded body that a
+// set of cells holds (a cavity's cast).
+//
+// Both are contours (alpha/lattice_contour.hpp) on a cubic lattice of the
+// given spacing, aligned to multiples of it, so they are closed,
+// consistently oriented 2-manifolds without self-intersections whatever
+// the input. The implicit function is exact where it is evaluated: a point
+// x is in the eroded body when its distance to F (the closure of the
+// union's complement) is at least r, computed from the union's boundary
+// pieces (ErodedUnion::Nearby). Each mesh vertex lies on a lattice edge
+// where that changes, located by root finding on the exact distance to
+// 1e-6 of the spacing: the vertices lie on the exact surface, so area and
+// volume converge to the analytic ones as the spacing shrinks (on 1A26
+// chain A at 0.5 A both are within 1%; see README).
+//
+// A cast (cells_mesh) is the set of points outside the eroded body whose
+// space is counted in the cells' shares (ErodedUnion::share_cell): the free
+// space in the cells, and the probe layer whose nearest point of F lies in
+// them. Its volume approaches the cells' layer shares plus their free
+// space (a cavity's ms_volume); it is capped flat where the cells end in
+// free space (a pocket's mouths).
+#pragma once
+#include <span>
+#include <vector>
+
+#include "alpha/eroded_union.hpp"
+#include "alpha/lattice_contour.hpp"
+
+namespace alpha {
+
+struct ErodedUnionMesh {
+  SurfaceMesh mesh;
+  // Per point: the cell whose share counts it (ErodedUnion::share_cell),
+  // kNone if none was found; may be an infinite cell.
+  std::vector<Index> share_cells;
+};
+
+// The boundary of the eroded body, every component oriented outward.
+// spacing > 0. Throws alpha::Error for a bad spacing or a lattice of more
+// than 2^31 nodes.
+ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing);
+
+// The cast of `cells` (sorted ids of finite cells), oriented outward (from
+// the cast into the body and out of its mouths).
+SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, double spacing);
+
+}  // namespace alpha

@@ -1,0 +1,228 @@
+#include "alpha/eroded_union_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <list>
+#include <string>
+#include <utility>
+
+#include "alpha/error.hpp"
+
+namespace alpha {
+namespace {
+
+using Nearby = ErodedUnion::Nearby;
+using Nearest = ErodedUnion::Nearest;
+
+// Root finding stops at this fraction of the spacing.
+constexpr double kRootPrecision = 1e-6;
+// A vertex stays this fraction of the spacing away from the nodes.
+constexpr double kNodeGap = 1e-5;
+// Blocks whose neighbourhoods are kept.
+constexpr std::size_t kCachedBlocks = 8;
+
+// The lattice of `spacing` (aligned to its multiples) over the box [lo, hi]
+// with two nodes to spare on every side.
+Lattice lattice_over(const Vec3& lo, const Vec3& hi, double spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) fail("mesh: the lattice spacing must be a number > 0");
+  Lattice l;
+  l.spacing = spacing;
+  const double low[3] = {lo.x, lo.y, lo.z}, high[3] = {hi.x, hi.y, hi.z};
+  double origin[3];
+  double nodes = 1;
+  for (int a = 0; a < 3; ++a) {
+    origin[a] = (std::floor(low[a] / spacing) - 2) * spacing;
+    const double n = std::ceil((high[a] - origin[a]) / spacing) + 3;
+    nodes *= n;
+    if (!(nodes < double(std::int64_t(1) << 31))) fail("mesh: the lattice would have more than 2^31 nodes");
+    l.size[a] = std::size_t(n);
+  }
+  l.origin = {origin[0], origin[1], origin[2]};
+  return l;
+}
+
+// The Nearby of the lattice's blocks (of kContourBlock nodes per axis),
+// reaching every point within one spacing of the block's nodes and `limit`
+// beyond: the last few blocks asked for are kept.
+class BlockHoods {
+public:
+  BlockHoods(const ErodedUnion& eu, const Lattice& lattice, double limit) : eu_(eu), lattice_(lattice), limit_(limit) {}
+
+  const Nearby& of(std::size_t node) {
+    const std::size_t B = kContourBlock, nx = lattice_.size[0], ny = lattice_.size[1];
+    const std::size_t i = node % nx / B, j = node / nx % ny / B, k = node / (nx * ny) / B;
+    const std::uint64_t key = (std::uint64_t(k) << 42) | (std::uint64_t(j) << 21) | i;
+    for (auto it = cache_.begin(); it != cache_.end(); ++it)
+      if (it->first == key) {
+        cache_.splice(cache_.begin(), cache_, it);
+        return cache_.front().second;
+      }
+    const double reach = half_diagonal() + lattice_.spacing * std::sqrt(3.0) + limit_ - eu_.r();
+    cache_.emplace_front(key, eu_.nearby(center(node), reach));
+    if (cache_.size() > kCachedBlocks) cache_.pop_back();
+    return cache_.front().second;
+  }
+  // The centre of the block of `node`: every node of the block and its
+  // cubes are within half_diagonal() + sqrt(3) spacings of it.
+  Vec3 center(std::size_t node) const {
+    const std::size_t B = kContourBlock, nx = lattice_.size[0], ny = lattice_.size[1];
+    const std::size_t i = node % nx / B, j = node / nx % ny / B, k = node / (nx * ny) / B;
+    const double h = lattice_.spacing, half = double(B - 1) / 2;
+    return lattice_.origin + Vec3{h * (double(i * B) + half), h * (double(j * B) + half), h * (double(k * B) + half)};
+  }
+  // Of a block's nodes from its centre.
+  double half_diagonal() const { return std::sqrt(3.0) * double(kContourBlock - 1) / 2 * lattice_.spacing; }
+  double limit() const { return limit_; }
+
+private:
+  const ErodedUnion& eu_;
+  const Lattice& lattice_;
+  double limit_;
+  std::list<std::pair<std::uint64_t, Nearby>> cache_;
+};
+
+// Calls f(first node, nodes) for each block of nodes.
+template <class F>
+void for_blocks(const Lattice& l, F f) {
+  const std::size_t B = kContourBlock;
+  std::vector<std::size_t> nodes;
+  for (std::size_t bk = 0; bk < l.size[2]; bk += B)
+    for (std::size_t bj = 0; bj < l.size[1]; bj += B)
+      for (std::size_t bi = 0; bi < l.size[0]; bi += B) {
+        nodes.clear();
+        for (std::size_t k = bk; k < std::min(bk + B, l.size[2]); ++k)
+          for (std::size_t j = bj; j < std::min(bj + B, l.size[1]); ++j)
+            for (std::size_t i = bi; i < std::min(bi + B, l.size[0]); ++i) nodes.push_back(l.index(i, j, k));
+        f(l.index(bi, bj, bk), nodes);
+      }
+}
+
+// The point at t in [gap, 1 - gap] of the segment from a to b.
+Vec3 along(const Vec3& a, const Vec3& b, double t) {
+  t = std::clamp(t, kNodeGap, 1 - kNodeGap);
+  return a + t * (b - a);
+}
+
+// The root of phi on [0, 1], phi(0) >= 0 > phi(1), by the Illinois
+// variant of regula falsi (bisection where it stalls).
+template <class Phi>
+double root(Phi phi) {
+  double ta = 0, tb = 1, fa = phi(0.0), fb = phi(1.0);
+  int side = 0;
+  for (int iter = 0; iter < 60 && tb - ta > kRootPrecision; ++iter) {
+    double t = fa - fb > 0 ? ta + fa * (tb - ta) / (fa - fb) : (ta + tb) / 2;
+    if (!(t > ta && t < tb)) t = (ta + tb) / 2;
+    const double f = phi(t);
+    if (f >= 0) {
+      ta = t, fa = f;
+      if (side == 1) fb /= 2;
+      side = 1;
+    } else {
+      tb = t, fb = f;
+      if (side == -1) fa /= 2;
+      side = -1;
+    }
+    if (std::fabs(f) < kRootPrecision * 1e-2) break;
+  }
+  return fa < -fb ? ta : tb;
+}
+
+// Lower and upper corners of the balls on the union's boundary.
+std::pair<Vec3, Vec3> boundary_box(const ErodedUnion& eu) {
+  const UnionOfBalls& balls = eu.balls();
+  const Triangulation& t = balls.complex().triangulation();
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (Index i = 0; i < t.num_points(); ++i) {
+    if (balls.ball_areas()[i] <= 0) continue;
+    const double r = std::sqrt(t.weight(i));
+    const Vec3 p = t.point(i);
+    lo = {std::min(lo.x, p.x - r), std::min(lo.y, p.y - r), std::min(lo.z, p.z - r)};
+    hi = {std::max(hi.x, p.x + r), std::max(hi.y, p.y + r), std::max(hi.z, p.z + r)};
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing) {
+  const auto [lo, hi] = boundary_box(eu);
+  if (!(lo.x <= hi.x)) return {};  // no boundary: no surface
+  const Lattice lattice = lattice_over(lo, hi, spacing);
+  const double r = eu.r();
+  // Distances are exact up to two spacings beyond r: the root finder's
+  // values are exact near the root.
+  BlockHoods hoods(eu, lattice, r + 2 * spacing);
+  std::vector<std::uint8_t> inside(lattice.num_nodes(), 0);
+  for_blocks(lattice, [&](std::size_t first, const std::vector<std::size_t>& nodes) {
+    // A block deep inside the body or far outside the union is one label.
+    const Nearby& near = hoods.of(first);
+    const Vec3 center = hoods.center(first);
+    const double half = hoods.half_diagonal();
+    const Nearest at = near.nearest(center, r + half);
+    if (at.on == Nearest::On::far) {
+      for (std::size_t n : nodes) inside[n] = 1;
+      return;
+    }
+    if (at.on == Nearest::On::outside && near.outside_by(center) > half) return;
+    for (std::size_t n : nodes) inside[n] = near.nearest(lattice.node(n), r).on == Nearest::On::far;
+  });
+  ErodedUnionMesh out;
+  Index hint = kNone;
+  out.mesh = contour(lattice, inside, [&](std::size_t a, std::size_t b) {
+    const Nearby& near = hoods.of(std::min(a, b));
+    const Vec3 pa = lattice.node(a), pb = lattice.node(b);
+    const auto phi = [&](double t) { return near.nearest(along(pa, pb, t), hoods.limit()).distance - r; };
+    const Vec3 p = along(pa, pb, root(phi));
+    const Nearest n = near.nearest(p, hoods.limit());
+    const Index cell = eu.share_cell(p, n, hint);
+    if (cell != kNone) hint = cell;
+    out.share_cells.push_back(cell);
+    return p;
+  });
+  return out;
+}
+
+SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, double spacing) {
+  const Triangulation& t = eu.balls().complex().triangulation();
+  if (cells.empty()) return {};
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (Index c : cells) {
+    if (c >= t.num_cells() || t.is_infinite(c)) fail("mesh: cell " + std::to_string(c) + " is not a finite cell");
+    for (Index v : t.cell(c).v) {
+      const Vec3 p = t.point(v);
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  }
+  const double r = eu.r();
+  const Lattice lattice = lattice_over(lo - Vec3{r, r, r}, hi + Vec3{r, r, r}, spacing);
+  BlockHoods hoods(eu, lattice, r + 2 * spacing);
+  Index hint = cells.front();
+  const auto held = [&](const Nearby& near, const Vec3& x) {
+    const Nearest n = near.nearest(x, r);
+    if (n.on == Nearest::On::far) return false;  // in the eroded body
+    const Index c = eu.share_cell(x, n, hint);
+    if (c == kNone) return false;
+    if (!t.is_infinite(c)) hint = c;
+    return std::binary_search(cells.begin(), cells.end(), c);
+  };
+  std::vector<std::uint8_t> inside(lattice.num_nodes(), 0);
+  for_blocks(lattice, [&](std::size_t first, const std::vector<std::size_t>& nodes) {
+    const Nearby& near = hoods.of(first);
+    if (near.nearest(hoods.center(first), r + hoods.half_diagonal()).on == Nearest::On::far) return;  // in the body
+    for (std::size_t n : nodes) inside[n] = held(near, lattice.node(n));
+  });
+  return contour(lattice, inside, [&](std::size_t a, std::size_t b) {
+    const Nearby& near = hoods.of(std::min(a, b));
+    const Vec3 pa = lattice.node(a), pb = lattice.node(b);
+    double ta = 0, tb = 1;  // held at ta, not at tb
+    while (tb - ta > kRootPrecision) {
+      const double mid = (ta + tb) / 2;
+      (held(near, along(pa, pb, mid)) ? ta : tb) = mid;
+    }
+    return along(pa, pb, (ta + tb) / 2);
+  });
+}
+
+}  // namespace alpha

@@ -1,0 +1,38 @@
+// The meshes of `alphapocket pockets` (written by PocketOutputDir):
+//
+//   surface   the molecular (solvent-excluded) surface, alpha::eroded_union_mesh
+//             of the probe-inflated atoms: each vertex painted in the colour
+//             of the cavity whose wall it lines (the cavity whose cell's
+//             share counts it, ErodedUnion::share_cell), grey elsewhere,
+//             with the cavity's rank by colour (pocket_colors.hpp) as its
+//             `site` (0 elsewhere); each face in the colour most of its
+//             vertices have;
+//   casts     per pocket and void, the space it holds as the molecular
+//             surface bounds it (alpha::cells_mesh of its cells), capped
+//             flat at its mouths, in its colour, every vertex's site its
+//             rank by colour. Its volume approaches the cavity's ms_volume.
+//
+// Triangle size is set by `resolution`, the lattice spacing in A.
+#pragma once
+#include <vector>
+
+#include "molecule/mesh_export.hpp"
+#include "molecule/pocket_search.hpp"
+
+namespace molecule {
+
+struct PocketMeshes {
+  TriangleMesh surface;
+  std::vector<TriangleMesh> pockets, voids;  // as in Cavities
+  double seconds = 0;  // wall-clock time taken
+};
+
+// Default triangle size: a 3,000-atom protein meshes in about a second,
+// within 1% of the analytic area and volume.
+inline constexpr double kDefaultMeshResolution = 0.5;
+
+// Throws alpha::Error for a resolution that is not > 0 or a molecule too
+// large for it (more than 2^31 lattice nodes).
+PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution);
+
+}  // namespace molecule
