@@ -166,7 +166,7 @@ case "$case_name" in
     # --outputs chooses the files of each structure; the same files as pockets writes.
     run -q batch "$data/1ytjA.pdb" -o "$tmp/o" --outputs report,csv,pml,pdb,meshes,tunnels --mesh obj
     expect_success
-    for f in report.json pockets.csv pockets.pml pockets.pdb meshes/molecule.obj; do
+    for f in report.json pockets.csv pockets.pml pockets.pdb meshes/surface.obj meshes/surface.mtl meshes/meshlab.mlp; do
       [[ -s "$tmp/o/1ytjA/$f" ]] || fail "1ytjA/$f missing"
     done
     run -q pockets "$data/1ytjA.pdb" -o "$tmp/pockets" --mesh obj
