@@ -226,6 +226,7 @@ struct ErodedUnion::Nearby::Hood {
   std::vector<std::pair<Index, Circle>> circles;
   std::vector<std::size_t> vertices;
   std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
+  mutable std::vector<std::pair<double, std::size_t>> holding;  // nearest()'s scratch
 };
 
 // The integrals of the pieces of one ErodedUnion.
@@ -242,17 +243,32 @@ public:
   Nearest nearest(const Hood& h, const Vec3& x, double limit) const {
     using On = Nearest::On;
     Nearest best{On::far, limit, x, kNone};
-    bool in_union = false;
-    for (const Hood::Ball& b : h.balls) {
+    // The balls holding x, nearest sphere first: the first whose radial
+    // projection of x lies on the boundary gives the nearest sphere point
+    // (the boundary test is the costly part: mostly one is needed).
+    std::vector<std::pair<double, std::size_t>>& holding = h.holding;
+    holding.clear();
+    for (std::size_t k = 0; k < h.balls.size(); ++k) {
+      const Hood::Ball& b = h.balls[k];
       const Vec3 d = x - b.c;
       const double dd = dot(d, d);
       if (dd >= b.radius_sq) continue;
-      in_union = true;
-      const double rd = std::sqrt(dd), dist = b.radius - rd;
+      const double dist = b.radius - std::sqrt(dd);
       if (dist >= limit) return best;  // F lies outside this ball: at least dist away
-      if (dist >= best.distance || rd == 0) continue;
+      holding.emplace_back(dist, k);
+    }
+    bool in_union = !holding.empty();
+    std::sort(holding.begin(), holding.end());
+    for (const auto& [dist, k] : holding) {
+      const Hood::Ball& b = h.balls[k];
+      const Vec3 d = x - b.c;
+      const double rd = std::sqrt(dot(d, d));
+      if (rd == 0) continue;
       const Vec3 q = b.c + (b.radius / rd) * d;
-      if (on_boundary(b.id, q, b.cover)) best = {On::sphere, dist, q, b.id};
+      if (on_boundary(b.id, q, b.cover)) {
+        best = {On::sphere, dist, q, b.id};
+        break;
+      }
     }
     for (std::size_t k = 0; k < h.buried.size() && !in_union; ++k)
       in_union = dot(x - h.buried[k].first, x - h.buried[k].first) < h.buried[k].second;

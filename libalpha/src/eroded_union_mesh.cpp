@@ -104,28 +104,31 @@ Vec3 along(const Vec3& a, const Vec3& b, double t) {
   return a + t * (b - a);
 }
 
-// The root of phi on [0, 1], phi(0) >= 0 > phi(1), by the Illinois
-// variant of regula falsi (bisection where it stalls).
-template <class Phi>
-double root(Phi phi) {
-  double ta = 0, tb = 1, fa = phi(0.0), fb = phi(1.0);
-  int side = 0;
-  for (int iter = 0; iter < 60 && tb - ta > kRootPrecision; ++iter) {
-    double t = fa - fb > 0 ? ta + fa * (tb - ta) / (fa - fb) : (ta + tb) / 2;
-    if (!(t > ta && t < tb)) t = (ta + tb) / 2;
-    const double f = phi(t);
-    if (f >= 0) {
-      ta = t, fa = f;
-      if (side == 1) fb /= 2;
-      side = 1;
-    } else {
-      tb = t, fb = f;
-      if (side == -1) fa /= 2;
-      side = -1;
+// Where the distance to F falls to r on the segment from inside node a
+// (distance >= r) to outside node b, and the nearest point of F there:
+// Newton's method on phi(t) = d(x(t), F) - r, whose derivative is the unit
+// vector from the nearest point to x dotted with b - a, kept inside the
+// bracket (bisection where a step leaves it or phi has no derivative:
+// outside the union, or beyond the limit). Three or four evaluations
+// where regula falsi took ten.
+std::pair<Vec3, Nearest> crossing(const Nearby& near, const Vec3& a, const Vec3& b, double r, double limit) {
+  const Vec3 d = b - a;
+  double ta = 0, tb = 1, t = 0.5;
+  for (int iter = 0;; ++iter) {
+    const Vec3 x = along(a, b, t);
+    const Nearest n = near.nearest(x, limit);
+    const double phi = n.distance - r;
+    (phi >= 0 ? ta : tb) = t;
+    double next = (ta + tb) / 2;
+    const bool smooth = n.on == Nearest::On::sphere || n.on == Nearest::On::circle || n.on == Nearest::On::vertex;
+    if (smooth && n.distance > 0) {
+      const double slope = dot(x - n.point, d) / n.distance;
+      const double newton = slope < 0 ? t - phi / slope : ta;
+      if (newton > ta && newton < tb) next = newton;
     }
-    if (std::fabs(f) < kRootPrecision * 1e-2) break;
+    if (std::fabs(next - t) < kRootPrecision || tb - ta < kRootPrecision || iter == 60) return {x, n};
+    t = next;
   }
-  return fa < -fb ? ta : tb;
 }
 
 // Lower and upper corners of the balls on the union's boundary.
@@ -170,11 +173,7 @@ ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing) {
   ErodedUnionMesh out;
   Index hint = kNone;
   out.mesh = contour(lattice, inside, [&](std::size_t a, std::size_t b) {
-    const Nearby& near = hoods.of(std::min(a, b));
-    const Vec3 pa = lattice.node(a), pb = lattice.node(b);
-    const auto phi = [&](double t) { return near.nearest(along(pa, pb, t), hoods.limit()).distance - r; };
-    const Vec3 p = along(pa, pb, root(phi));
-    const Nearest n = near.nearest(p, hoods.limit());
+    const auto [p, n] = crossing(hoods.of(std::min(a, b)), lattice.node(a), lattice.node(b), r, hoods.limit());
     const Index cell = eu.share_cell(p, n, hint);
     if (cell != kNone) hint = cell;
     out.share_cells.push_back(cell);

@@ -112,6 +112,16 @@ void check_input(const std::string& path, const TriangleMesh& in) {
 // triangle of their fan.
 std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copies) {
   const std::size_t corners = 3 * in.triangles.size();
+  if (in.manifold) {  // one fan per point: a copy per point used, in point order
+    std::vector<std::size_t> number(in.points.size(), 0);
+    for (const auto& t : in.triangles)
+      for (alpha::Index v : t) number[v] = 1;
+    copies = 0;
+    for (std::size_t& n : number) n = n ? copies++ : 0;
+    std::vector<std::size_t> copy(corners);
+    for (std::size_t c = 0; c < corners; ++c) copy[c] = number[in.triangles[c / 3][c % 3]];
+    return copy;
+  }
   std::vector<std::size_t> parent(corners);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto find = [&](std::size_t c) {

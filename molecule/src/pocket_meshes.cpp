@@ -17,6 +17,7 @@ TriangleMesh from(alpha::SurfaceMesh&& m) {
   TriangleMesh out;
   out.points = std::move(m.points);
   out.triangles = std::move(m.triangles);
+  out.manifold = true;  // a contour (alpha/lattice_contour.hpp)
   return out;
 }
 

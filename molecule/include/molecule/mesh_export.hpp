@@ -62,6 +62,9 @@ struct TriangleMesh {
   // the PLY vertex property `site`.
   std::vector<Rgb> vertex_colors;
   std::vector<int> vertex_sites;
+  // Whether the triangles are known to form a 2-manifold (every vertex one
+  // fan): then no point needs copies, and the search for them is skipped.
+  bool manifold = false;
 };
 
 struct MeshFileInfo {
