@@ -339,10 +339,9 @@ MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& m
 
 MeshFileInfo write_mesh_file(const std::string& path, const TriangleMesh& mesh) {
   const MeshFileContent file = mesh_file_content(path, mesh);
-  if (file.companion_path.empty())
-    write_file_atomically(path, file.bytes);
-  else
-    write_files_atomically({{path, file.bytes}, {file.companion_path, file.companion}});
+  // The .mtl first: the mesh never names a material file that is not there.
+  if (!file.companion_path.empty()) write_file_atomically(file.companion_path, file.companion);
+  write_file_atomically(path, file.bytes);
   return file.info;
 }
 
