@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "molecule/pocket_colors.hpp"
 #include "molecule/safe_text.hpp"
@@ -46,6 +47,8 @@ std::string header(const PocketRun& run, const ViewerScene& scene) {
   s += "# at their sinks), #3 their centres, #4 the tunnels' bottlenecks (cyan), #5 the tunnels and pores\n";
   s += "# with a path as spheres of their radius profile (tunnel_N_path, shades of cyan, tunnel_N names the\n";
   s += "# lining residues). Sites after the " + std::to_string(kShownSites) + "th are hidden.\n";
+  s += "# pocket_N_cast is the cast of its space as the molecular surface bounds it (meshes/, when written\n";
+  s += "# as OBJ or STL: --mesh obj), transparent, in its colour.\n";
   return s;
 }
 
@@ -118,6 +121,31 @@ std::string tunnels(const ViewerScene& scene) {
   return s;
 }
 
+// Each cavity's cast, where the meshes are in a format ChimeraX opens (OBJ
+// or STL; not PLY or OFF): opened last, each as the lowest free model id
+// after those made above (#1, #2 and #3 with cavities, #4 with tunnels, #5
+// with tunnel paths),
+// renamed after its cavity, transparent, in its colour.
+std::string casts(const ViewerScene& scene) {
+  std::vector<bool> taken{true, true, false, !scene.cavities.empty(), !scene.tunnels.empty(),
+                          !scene.paths.empty()};  // [0]: no id
+  for (const SceneCavity& c : scene.cavities) taken[2] = taken[2] || !c.space.empty();
+  std::string s;
+  std::size_t id = 1;
+  for (const SceneCavity& c : scene.cavities) {
+    const std::string ext = std::filesystem::path(c.cast).extension().string();
+    if (ext != ".obj" && ext != ".stl") continue;
+    while (id < taken.size() && taken[id]) ++id;
+    const std::string model = "#" + std::to_string(id++);
+    s += "open " + c.cast + "\n";
+    s += "rename " + model + " " + c.name + "_cast\n";
+    s += "color " + model + " " + rgb(c.color) + "\n";
+    s += "transparency " + model + " 40 target s\n";
+    if (!c.shown) s += "hide " + model + " models\n";
+  }
+  return s;
+}
+
 std::string view(const ViewerScene& scene) {
   if (scene.cavities.empty() || scene.cavities.front().site_rank != 1) return "view #1\n";
   return "view " + scene.cavities.front().name + " | #3.1\n";
@@ -126,7 +154,7 @@ std::string view(const ViewerScene& scene) {
 }  // namespace
 
 std::string chimerax_script(const PocketRun& run, const ViewerScene& scene) {
-  return header(run, scene) + structure(scene) + cavities(scene) + tunnels(scene) + view(scene);
+  return header(run, scene) + structure(scene) + cavities(scene) + tunnels(scene) + casts(scene) + view(scene);
 }
 
 }  // namespace molecule

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "molecule/pocket_colors.hpp"
 #include "molecule/safe_text.hpp"
@@ -54,6 +55,8 @@ std::string header(const PocketRun& run, const ViewerScene& scene) {
   s += "# tunnel N's bottleneck, tunnel_N_bottleneck is the largest probe passing it (cyan). For tunnels\n";
   s += "# and pores with a path (report.json tunnels of kind tunnel or pore), tunnel_N selects the lining\n";
   s += "# residues and tunnel_N_path is the centreline as spheres of the radius profile (shades of cyan).\n";
+  s += "# pocket_N_cast is the cast of its space as the molecular surface bounds it (meshes/, when written\n";
+  s += "# as PLY or OBJ: --mesh), in its colour, loaded disabled (enable the group casts to see them).\n";
   return s;
 }
 
@@ -110,6 +113,88 @@ std::string cavities(const ViewerScene& scene) {
   return s;
 }
 
+// PyMOL 2.5 reads only ASCII PLY, and scales it by 100: the casts are read
+// by Python of our own, from the binary PLY or the OBJ we write, as smooth
+// CGO surfaces.
+constexpr const char* kCastReader = R"py(python
+import os, struct
+from pymol import cgo, cmd
+ap_dir = os.path.dirname(os.path.abspath(globals().get("__script__", "pockets.pml")))
+def ap_cast(file, name, rgb):
+    data = open(os.path.join(ap_dir, file), "rb").read()
+    points, faces = [], []
+    if file.endswith(".obj"):
+        for w in (line.split() for line in data.decode("ascii").splitlines()):
+            if w and w[0] == "v":
+                points.append(tuple(map(float, w[1:4])))
+            elif w and w[0] == "f":
+                faces.append([int(x.split("/")[0]) - 1 for x in w[1:4]])
+    else:  # binary little-endian PLY: vertices x y z first, faces a uchar count of int indices first
+        end = data.index(b"end_header\n") + len(b"end_header\n")
+        codes = {"float": "f", "double": "d", "uchar": "B", "char": "b", "int": "i", "uint": "I"}
+        elements = []
+        for w in (line.split() for line in data[:end].decode("ascii").splitlines()):
+            if w[0] == "element":
+                elements.append((int(w[2]), []))
+            elif w[0] == "property":
+                elements[-1][1].append(w[1:])
+        at = end
+        for count, props in elements:
+            if props[0][0] == "list":
+                rest = struct.calcsize("<" + "".join(codes[p[0]] for p in props[1:]))
+                for k in range(count):
+                    faces.append(struct.unpack_from("<%di" % data[at], data, at + 1))
+                    at += 1 + 4 * data[at] + rest
+            else:
+                fmt = "<" + "".join(codes[p[0]] for p in props)
+                size = struct.calcsize(fmt)
+                points = [struct.unpack_from(fmt, data, at + k * size)[:3] for k in range(count)]
+                at += count * size
+    normals = [[0.0, 0.0, 0.0] for _ in points]
+    for f in faces:
+        a, b, c = (points[i] for i in f[:3])
+        u, v = [b[j] - a[j] for j in range(3)], [c[j] - a[j] for j in range(3)]
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        for i in f[:3]:
+            for j in range(3):
+                normals[i][j] += n[j]
+    obj = [cgo.BEGIN, cgo.TRIANGLES, cgo.COLOR] + list(rgb)
+    for f in faces:
+        for i in f[:3]:
+            n = normals[i]
+            length = (n[0] ** 2 + n[1] ** 2 + n[2] ** 2) ** 0.5 or 1.0
+            obj += [cgo.NORMAL, n[0] / length, n[1] / length, n[2] / length, cgo.VERTEX] + list(points[i])
+    obj.append(cgo.END)
+    cmd.load_cgo(obj, name)
+python end
+)py";
+
+bool pymol_reads(const std::string& cast) {
+  const std::string ext = std::filesystem::path(cast).extension().string();
+  return ext == ".ply" || ext == ".obj";
+}
+
+// Each cavity's cast, a surface in its colour, where the meshes are in a
+// format the reader above reads; disabled (enable them to see the sites'
+// volumes): opaque, they would hide each other and the sites' residues
+// (and PyMOL 2.5's ray tracer drops a transparent CGO behind the
+// transparent molecular surface).
+std::string casts(const ViewerScene& scene) {
+  std::string s;
+  for (const SceneCavity& c : scene.cavities) {
+    if (!pymol_reads(c.cast)) continue;
+    if (s.empty()) s = kCastReader;
+    char rgb[64];
+    std::snprintf(rgb, sizeof rgb, "[%.4f, %.4f, %.4f]", c.color.r / 255.0, c.color.g / 255.0, c.color.b / 255.0);
+    s += "/ap_cast(\"" + c.cast + "\", \"" + c.name + "_cast\", " + rgb + ")\n";
+  }
+  if (s.empty()) return s;
+  s += "group casts, *_cast\n";
+  for (const SceneCavity& c : scene.cavities)
+    if (pymol_reads(c.cast)) s += "disable " + c.name + "_cast\n";
+  return s;
+}
+
 std::string tunnels(const ViewerScene& scene) {
   std::string s;
   for (const SceneTunnel& t : scene.tunnels) {
@@ -150,7 +235,7 @@ std::string view(const ViewerScene& scene) {
 }  // namespace
 
 std::string pymol_script(const PocketRun& run, const ViewerScene& scene) {
-  return header(run, scene) + structure(scene) + cavities(scene) + tunnels(scene) + view(scene);
+  return header(run, scene) + structure(scene) + cavities(scene) + casts(scene) + tunnels(scene) + view(scene);
 }
 
 }  // namespace molecule

@@ -63,6 +63,8 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
     s.lining_ids = ids_of(c.lining_atoms);
     s.center = c.center;
     s.space = sink_spheres(ac, c);
+    if (!run.mesh_format.empty())
+      s.cast = cavity_mesh_path(is_void ? "void" : "pocket", index + 1, run.mesh_format);
     scene.cavities.push_back(std::move(s));
   };
   std::vector<bool> void_is_site(cavities.voids.size(), false);

@@ -37,6 +37,11 @@ FORMS = [
     r"rename #4\.[0-9]+ tunnel_[0-9]+_bottleneck",
     r"rename #5\.[0-9]+ tunnel_[0-9]+_path",
     r"hide #[23]\.[0-9]+ models",
+    r"open meshes/(?:pocket|void)_[0-9]+\.(?:obj|stl)",
+    r"rename #[0-9]+ (?:pocket|void)_[0-9]+_cast",
+    r"color #[0-9]+ " + RGB,
+    r"transparency #[0-9]+ [0-9]{1,3} target s",
+    r"hide #[0-9]+ models",
     r"view #1",
     r"view (?:pocket|void)_[0-9]+ \| #3\.1",
 ]

@@ -11,7 +11,10 @@ check_cxc.py (ChimeraX is not in Debian). One case per CTest test:
                says, the ligand is there, sites after the 12th are
                disabled, and a rendered PNG shows the colour of the top
                site (report.json's first) in the middle of the view
-               (which disabling the top site's objects takes away).
+               (which disabling the top site's objects takes away); each
+               cavity's cast is loaded, disabled (pocket_N_cast), and the
+               top site's cast, enabled without the other sites' spaces,
+               shows its colour there too.
   pymol_3stdA  the same where the best site is a buried void.
   pymol_1fkgA  the same where the second site's sphere lies between the
                best site and the viewer (it must not hide it).
@@ -105,6 +108,12 @@ top = "%(top)s"
 cmd.disable(top + "_space")
 cmd.disable(top + "_center")
 cmd.color("grey80", "byres " + top)
+for name in names:  # the other sites' objects may hide it
+    if name.endswith("_space") or (name.endswith("_cast") and name != top + "_cast"):
+        cmd.disable(name)
+cmd.enable(top + "_cast")
+cmd.png("cast.png", width=320, height=240, ray=1)
+cmd.disable(top + "_cast")
 cmd.png("without_top.png", width=320, height=240, ray=1)
 print("RESULT " + json.dumps({"names": names, "enabled": enabled, "counts": counts, "paths": paths,
                              "residues": residues}))
@@ -202,13 +211,16 @@ def view_case(structure, object_name, *args, min_paths=1):
             name = f"{site['kind']}_{site['cavity_rank']}_center"
             if (name in enabled) != (site["rank"] <= 12):
                 fail(f"{name}: enabled is {name in enabled} at site rank {site['rank']}")
+            cast = f"{site['kind']}_{site['cavity_rank']}_cast"
+            if cast not in names or cast in enabled:  # loaded, shown on demand
+                fail(f"{cast}: loaded is {cast in names}, enabled is {cast in enabled}")
         for tunnel in (t for t in report["tunnels"] if t["kind"] == "cycle"):
             if f"tunnel_{tunnel['rank']}_bottleneck" not in names:
                 fail(f"no tunnel_{tunnel['rank']}_bottleneck")
         check_paths(report, got, min_paths)
         keep = os.environ.get("ALPHAPOCKET_KEEP_PNG")  # to look at them
         if keep:
-            for png in ("view.png", "without_top.png"):
+            for png in ("view.png", "cast.png", "without_top.png"):
                 shutil.copy(os.path.join(tmp, "cwd", png), os.path.join(keep, f"{object_name}_{png}"))
         # The top site (report.json's first, whichever cavity that is) has its
         # colour, in the middle of the view (the script centres it), and the
@@ -218,11 +230,15 @@ def view_case(structure, object_name, *args, min_paths=1):
         if color != (228, 26, 28):
             fail(f"the top site {top} is {color}, not red (molecule/pocket_colors.hpp: the best site is red)")
         with_top, central, pixels = near_color_pixels(os.path.join(tmp, "cwd", "view.png"), color)
+        cast, cast_central, _ = near_color_pixels(os.path.join(tmp, "cwd", "cast.png"), color)
         without_top, _, _ = near_color_pixels(os.path.join(tmp, "cwd", "without_top.png"), color)
-        print(f"{top}: colour {color}, {with_top} of {pixels} pixels ({central} central); "
-              f"{without_top} with it disabled")
+        print(f"{top}: colour {color}, {with_top} of {pixels} pixels ({central} central); its cast alone "
+              f"{cast} ({cast_central} central); {without_top} with it disabled")
         if with_top < 0.0025 * pixels or central < with_top / 2 or without_top > with_top / 4:
             fail(f"the top site's colour is not what shows in the middle: {with_top} pixels ({central} central), "
+                 f"{without_top} without it")
+        if cast < 0.0025 * pixels or cast_central < cast / 2 or without_top > cast / 4:
+            fail(f"the top site's cast does not show in the middle: {cast} pixels ({cast_central} central), "
                  f"{without_top} without it")
         # No other site hides it: in the middle, no next site's colour
         # outnumbers the top site's more than twice.
@@ -332,6 +348,34 @@ def cxc_case():
                        "name tunnel_"):
             if needed not in cxc:
                 fail(f"pockets.cxc has no {needed!r}")
+        # With OBJ meshes the casts open, each as the lowest model id free
+        # then (ChimeraX's rule), which the script's rename, color and hide use.
+        pockets(os.path.join(ROOT, "examples", "data", "1a26A.pdb"), os.path.join(tmp, "obj"), "--mesh", "obj")
+        cxc_obj = open(os.path.join(tmp, "obj", "pockets.cxc"), encoding="ascii").read()
+        problems = check_cxc.check(cxc_obj)
+        if problems:
+            fail(f"pockets.cxc with --mesh obj: {problems[:3]}")
+        models, opened = {1}, []
+        lines = cxc_obj.splitlines()
+        for k, line in enumerate(lines):
+            m = re.match(r"marker #([0-9]+)\.", line)
+            if m:
+                models.add(int(m.group(1)))
+            m = re.match(r"open (meshes/(pocket|void)_([0-9]+)\.obj)$", line)
+            if m:
+                if not os.path.isfile(os.path.join(tmp, "obj", m.group(1))):
+                    fail(f"pockets.cxc opens {m.group(1)}, which is not there")
+                free = min(i for i in range(1, len(models) + 2) if i not in models)
+                models.add(free)
+                want = f"rename #{free} {m.group(2)}_{m.group(3)}_cast"
+                if lines[k + 1] != want or not lines[k + 2].startswith(f"color #{free} rgb("):
+                    fail(f"pockets.cxc: after {line!r} expected {want!r}, found {lines[k + 1:k + 3]!r}")
+                opened.append(m.group(1))
+        with open(os.path.join(tmp, "obj", "report.json")) as f:
+            report = json.load(f)
+        meshes = sorted(c["mesh"] for kind in ("pockets", "voids") for c in report[kind])
+        if sorted(opened) != meshes:
+            fail(f"pockets.cxc opens {len(opened)} casts, report.json names {len(meshes)}")
         # The checker bites: a foreign command, a ';' and a name anywhere are refused.
         # Each tunnel or pore of report.json: as many markers in its #5.K as profile points.
         with open(os.path.join(tmp, "out", "report.json")) as f:

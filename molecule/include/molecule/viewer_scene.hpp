@@ -31,6 +31,7 @@ struct SceneCavity {
   std::vector<std::size_t> lining_ids;  // atom ids in structure.cif
   alpha::Vec3 center;
   std::vector<SinkSphere> space;  // its sinks' orthospheres (pockets.pdb's SNK atoms)
+  std::string cast;  // its cast mesh relative to the scripts ("meshes/pocket_3.ply"); empty: no meshes
 };
 
 struct SceneTunnel {
