@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Time to mesh the molecular surface of protein structures: ours
 // (alpha::eroded_union_mesh, the solvent-excluded surface, at the default
 // --mesh-resolution) against CGAL's Skin_surface_3 meshing of the same

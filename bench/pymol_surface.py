@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # PyMOL's molecular surface of each file, headless: run as
 #   pymol -cq bench/pymol_surface.py -- FILE...
 # (Debian's pymol, with Debian's python3 first in PATH). Prints one line per

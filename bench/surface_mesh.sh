@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Time to mesh the molecular surface, ours against CGAL's Skin_surface_3
 # (bench_surface_mesh) and PyMOL's surface (bench/pymol_surface.py, headless
 # Debian pymol) on the same files in one run, with each one's area and

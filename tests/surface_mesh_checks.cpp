@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "surface_mesh_checks.hpp"
 
 #include <algorithm>

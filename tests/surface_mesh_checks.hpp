@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks of a triangle mesh as a surface (on vertex indices, as a viewer
 // such as MeshLab sees a file): closed and manifold, consistently oriented,
 // no two triangles crossing, its area and enclosed volume.

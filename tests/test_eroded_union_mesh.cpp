@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Meshes of the molecular surface (alpha::eroded_union_mesh): closed,
 // consistently oriented 2-manifolds without crossing triangles (exact
 // test), whose area and volume approach ErodedUnion's analytic ones, on

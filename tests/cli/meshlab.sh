@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The meshes of `alphapocket pockets` as MeshLab sees them: meshlabserver
 # (Debian meshlab, under xvfb-run: it needs a display) opens each file and
 # computes its topological and geometric measures; its log must say

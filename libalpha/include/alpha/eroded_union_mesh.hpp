@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Triangle meshes of an eroded union (alpha/eroded_union.hpp): its
 // boundary (for the probe-inflated atoms of a molecule, the molecular or
 // solvent-excluded surface), and the space outside the eroded body that a

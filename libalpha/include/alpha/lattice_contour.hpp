@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A closed surface around the inside nodes of a cubic lattice: marching
 // tetrahedra on the Freudenthal (Kuhn) triangulation of its cubes (each
 // cube cut into 6 tetrahedra along its main diagonal, the same way in

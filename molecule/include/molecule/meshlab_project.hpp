@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A MeshLab project (.mlp) that opens several mesh files at once, as
 // MeshLab 2020.09 writes them: file names relative to the project's
 // directory, each mesh in place (identity matrix), all visible.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The meshes of `alphapocket pockets` (written by PocketOutputDir):
 //
 //   surface   the molecular (solvent-excluded) surface, alpha::eroded_union_mesh
