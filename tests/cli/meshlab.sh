@@ -40,16 +40,21 @@ within() {  # WHAT VALUE EXPECTED RELATIVE
 
 case "$case_name" in
   surface)
-    # The molecular surface: the analytic volume and area of `surface`, within 1%.
-    "$exe" -q surface "$pdb" --json >"$tmp/surface.json"
-    ms_volume=$(grep -o '"ms_volume":[0-9.e+]*' "$tmp/surface.json" | cut -d: -f2)
-    ms_area=$(grep -o '"ms_area":[0-9.e+]*' "$tmp/surface.json" | cut -d: -f2)
-    run pockets "$pdb" -o "$tmp/o"
-    expect_success
-    measure "$tmp/o/meshes/surface.ply"
-    expect_closed_manifold surface.ply
-    within "surface volume" "$(volume)" "$ms_volume" 0.01
-    within "surface area" "$(area)" "$ms_area" 0.01
+    # The molecular surface of three proteins: the analytic volume and area
+    # of `surface`, within 1%.
+    for file in "$pdb" "$root/tests/data/1fkgA.pdb" "$root/tests/data/1UYD.pdb"; do
+      name=$(basename "$file" .pdb)
+      "$exe" -q surface "$file" --json >"$tmp/$name.json"
+      ms_volume=$(grep -o '"ms_volume":[0-9.e+]*' "$tmp/$name.json" | cut -d: -f2)
+      ms_area=$(grep -o '"ms_area":[0-9.e+]*' "$tmp/$name.json" | cut -d: -f2)
+      run pockets "$file" -o "$tmp/$name"
+      expect_success
+      measure "$tmp/$name/meshes/surface.ply"
+      expect_closed_manifold "$name surface.ply"
+      echo "$name: MeshLab volume $(volume) (ms_volume $ms_volume), area $(area) (ms_area $ms_area)"
+      within "$name surface volume" "$(volume)" "$ms_volume" 0.01
+      within "$name surface area" "$(area)" "$ms_area" 0.01
+    done
     ;;
   casts)
     # Each pocket's cast: closed, its volume the reported ms_volume (2% for
