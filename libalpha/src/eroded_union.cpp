@@ -211,6 +211,15 @@ struct LayerSum {
   LayerShare value() const { return {volume.value(), area.value()}; }
 };
 
+constexpr std::size_t kNoCover = std::size_t(-1);
+
+// A point of F found nearer to x than t: on a sphere (the nearest point
+// of a hood ball), a circle (of a hood circle) or a vertex.
+struct Nearer {
+  enum Kind { kNone, kBall, kCircle, kVertex } kind = kNone;
+  std::size_t which = 0;  // in the hood's list
+};
+
 }  // namespace
 
 // What can be within reach of a point (2r of a piece): balls whose sphere
@@ -220,13 +229,16 @@ struct ErodedUnion::Nearby::Hood {
     Vec3 c;
     double radius, radius_sq;
     Index id;
-    mutable Index cover = kNone;  // see on_boundary
+    mutable std::size_t cover = kNoCover;  // see on_boundary
   };
   std::vector<Ball> balls;  // by id
   std::vector<std::pair<Index, Circle>> circles;
   std::vector<std::size_t> vertices;
   std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
   mutable std::vector<std::pair<double, std::size_t>> holding;  // nearest()'s scratch
+  // The last point clear() found nearer: the next tests (nearby points)
+  // try it first.
+  mutable Nearer last;
 };
 
 // The integrals of the pieces of one ErodedUnion.
@@ -454,7 +466,7 @@ private:
     });
     std::sort(ids.begin(), ids.end());
     for (Index k : ids) {
-      const Hood::Ball b{t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNone};
+      const Hood::Ball b{t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNoCover};
       if (ball_near(b, center, reach)) h.balls.push_back(b);
     }
     for (Index k : ids)
@@ -478,6 +490,7 @@ private:
     out.balls.clear();
     out.circles.clear();
     out.vertices.clear();
+    out.last = {};
     for (const Hood::Ball& b : h.balls)
       if (ball_near(b, x, reach)) out.balls.push_back(b);
     for (const auto& [e, c] : h.circles)
@@ -490,20 +503,17 @@ private:
   // power cell, i.e. in no ball of a neighbour of k.
   // `cover`: a neighbour to try first, set to the one found covering p
   // (the same neighbour covers the nearby points a piece tests in turn).
-  bool on_boundary(Index k, const Vec3& p, Index& cover) const {
-    const auto covers = [&](Index m) {
-      const Vec3 d = p - t_.point(m);
-      return dot(d, d) < t_.weight(m) - 2 * tol_ * std::sqrt(t_.weight(m));
+  bool on_boundary(Index k, const Vec3& p, std::size_t& cover) const {
+    const auto covers = [&](const Cover& m) {
+      const Vec3 d = p - m.c;
+      return dot(d, d) < m.limit;
     };
-    if (cover != kNone && covers(cover)) return false;
-    for (Index e : s_.vertex_edges(k)) {
-      const auto& v = s_.edge(e);
-      const Index m = v[0] == k ? v[1] : v[0];
-      if (covers(m)) {
+    if (cover != kNoCover && covers(eu_.covers_[cover])) return false;
+    for (std::size_t m = eu_.cover_start_[k]; m < eu_.cover_start_[k + 1]; ++m)
+      if (covers(eu_.covers_[m])) {
         cover = m;
         return false;
       }
-    }
     return true;
   }
 
@@ -517,48 +527,72 @@ private:
     return dot(d, cross(b, c)) * whole >= 0 && dot(a, cross(d, c)) * whole >= 0 && dot(a, cross(b, d)) * whole >= 0;
   }
 
-  // A point of F found nearer to x than t: on a sphere (the nearest point
-  // of a hood ball), a circle (of a hood circle) or a vertex.
-  struct Nearer {
-    enum Kind { kNone, kBall, kCircle, kVertex } kind = kNone;
-    std::size_t which = 0;  // in the hood's list
-  };
+  // Whether the point of ball b's sphere nearest to x is nearer than
+  // `limit` and on the boundary; `inside`: whether x is in b.
+  bool ball_finds(const Hood::Ball& b, const Vec3& x, double limit, bool& inside) const {
+    const Vec3 d = x - b.c;
+    const double dd = dot(d, d);
+    inside = !(dd >= b.radius_sq);
+    if (!inside) return false;
+    const double deep = b.radius - limit;  // x is nearer than limit to the sphere beyond this
+    if ((deep > 0 && dd <= deep * deep) || dd == 0) return false;
+    return on_boundary(b.id, b.c + (b.radius / std::sqrt(dd)) * d, b.cover);
+  }
+
+  // Whether a point of circle c's arcs (edge e) is nearer to x than `limit`.
+  bool circle_finds(Index e, const Circle& c, const Vec3& x, double limit, double limit_sq) const {
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w);
+    if (std::fabs(z) >= limit) return false;
+    const Vec3 perp = y - z * c.w;
+    const double s = std::sqrt(dot(perp, perp));
+    if ((s - c.rho) * (s - c.rho) + z * z >= limit_sq) return false;
+    // On the axis: all its points equally near.
+    return s <= tol_ || contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], dot(perp, c.e1), dot(perp, c.e2));
+  }
+
+  // Whether what `n` names in h is a point of F nearer to x than `limit`
+  // (then clear() answers false: it finds n or an earlier one, or x is
+  // outside the union).
+  bool finds(const Hood& h, const Nearer& n, const Vec3& x, double limit, double limit_sq) const {
+    bool inside;
+    switch (n.kind) {
+      case Nearer::kBall: return ball_finds(h.balls[n.which], x, limit, inside);
+      case Nearer::kCircle: return circle_finds(h.circles[n.which].first, h.circles[n.which].second, x, limit, limit_sq);
+      case Nearer::kVertex: {
+        const Vec3 d = x - eu_.vertices_[h.vertices[n.which]].p;
+        return dot(d, d) < limit_sq;
+      }
+      case Nearer::kNone: break;
+    }
+    return false;
+  }
 
   // Whether no point of F (outside the union) is nearer to x than t, up to
   // the tolerance; if one is, `nearer` tells which. `self`: the vertex
   // whose piece x is tested for (or vertices_.size()), which keeps
   // directions shared with a coincident vertex of smaller index out.
+  // Without `nearer` only the answer counts: the point h found last is
+  // tried first (nearby tests are mostly cut off by the same point).
   bool clear(const Hood& h, const Vec3& x, double t, std::size_t self, Nearer* nearer = nullptr) const {
     const double limit = t - tol_;
     if (limit <= 0) return true;
     const double limit_sq = limit * limit;
+    if (!nearer && finds(h, h.last, x, limit, limit_sq)) return false;
     const auto found = [&](Nearer::Kind kind, std::size_t which) {
       if (nearer) *nearer = {kind, which};
+      if (kind != Nearer::kNone) h.last = {kind, which};
       return false;
     };
     bool in_union = false;
     for (std::size_t k = 0; k < h.balls.size(); ++k) {
-      const Hood::Ball& b = h.balls[k];
-      const Vec3 d = x - b.c;
-      const double dd = dot(d, d);
-      if (dd >= b.radius_sq) continue;
-      in_union = true;
-      const double deep = b.radius - limit;  // x is nearer than limit to the sphere beyond this
-      if ((deep > 0 && dd <= deep * deep) || dd == 0) continue;
-      if (on_boundary(b.id, b.c + (b.radius / std::sqrt(dd)) * d, b.cover)) return found(Nearer::kBall, k);
+      bool inside;
+      if (ball_finds(h.balls[k], x, limit, inside)) return found(Nearer::kBall, k);
+      in_union = in_union || inside;
     }
     if (!in_union) return found(Nearer::kNone, 0);
-    for (std::size_t k = 0; k < h.circles.size(); ++k) {
-      const auto& [e, c] = h.circles[k];
-      const Vec3 y = x - c.o;
-      const double z = dot(y, c.w);
-      if (std::fabs(z) >= limit) continue;
-      const Vec3 perp = y - z * c.w;
-      const double s = std::sqrt(dot(perp, perp));
-      if ((s - c.rho) * (s - c.rho) + z * z >= limit_sq) continue;
-      if (s <= tol_ || contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], dot(perp, c.e1), dot(perp, c.e2)))
-        return found(Nearer::kCircle, k);  // on the axis: all equally near
-    }
+    for (std::size_t k = 0; k < h.circles.size(); ++k)
+      if (circle_finds(h.circles[k].first, h.circles[k].second, x, limit, limit_sq)) return found(Nearer::kCircle, k);
     const bool is_vertex = self < eu_.vertices_.size();
     for (std::size_t k = 0; k < h.vertices.size(); ++k) {
       const std::size_t v = h.vertices[k];
@@ -688,6 +722,23 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
   }
   tolerance_ = 1e-9 * std::max(max_radius_, r);
   const double power_tolerance = 2 * tolerance_ * max_radius_;
+
+  // Covers: a ball that does not meet sphere i covers none of its points
+  // (the test's tolerance is far above the rounding of a point on it).
+  cover_start_.assign(n + 1, 0);
+  for (Index i = 0; i < n; ++i) {
+    cover_start_[i] = covers_.size();
+    if (balls.ball_areas()[i] == 0) continue;
+    const double radius = std::sqrt(t.weight(i));
+    for (Index e : s.vertex_edges(i)) {
+      const auto& v = s.edge(e);
+      const Index m = v[0] == i ? v[1] : v[0];
+      const double radius_m = std::sqrt(t.weight(m));
+      if (norm(t.point(m) - t.point(i)) < radius + radius_m + tolerance_)
+        covers_.push_back({t.point(m), t.weight(m) - 2 * tolerance_ * radius_m});
+    }
+  }
+  cover_start_[n] = covers_.size();
 
   // Arcs: each circle of an edge of K, less the balls of its ring.
   arc_start_.assign(s.num_edges() + 1, 0);

@@ -150,6 +150,12 @@ public:
     Index triangle;
     Index cell;  // the cell on its side of the triangle (may be infinite)
   };
+  // A neighbour's ball as a test of covering: a point x is inside when
+  // |x - c|^2 < limit (its squared radius less the tolerance).
+  struct Cover {
+    Vec3 c;
+    double limit;
+  };
 
 private:
   class Integrator;
@@ -167,6 +173,11 @@ private:
   // Per input point: the shell's volume and the contact patch's area per
   // unit of sphere area on the boundary.
   std::vector<double> shell_factor_, contact_factor_;
+  // Per input point on the boundary: the balls of its neighbours in the
+  // triangulation that meet its sphere (only they can cover a point of
+  // it), in vertex_edges order; compressed rows.
+  std::vector<std::size_t> cover_start_;
+  std::vector<Cover> covers_;
   double max_radius_ = 0;
   PointGrid ball_grid_, vertex_grid_;  // the boundary's balls and vertices
 };
