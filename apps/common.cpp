@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -37,14 +36,16 @@ CLI::Validator hetero_code() {
       "");
 }
 
-// probability or geometric, as the enum's number CLI11 stores; a plain
-// message otherwise (CLI11's own names its internal map).
+// A ranking's name, as the enum's number CLI11 stores; a plain message
+// otherwise (CLI11's own names its internal map).
 CLI::Validator ranking_name() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        if (text == "probability") text = std::to_string(int(molecule::SiteRanking::probability));
-        else if (text == "geometric") text = std::to_string(int(molecule::SiteRanking::geometric));
-        else return "'" + text + "' is not a ranking (probability or geometric)";
+        try {
+          text = std::to_string(int(molecule::parse_site_ranking(text)));
+        } catch (const alpha::Error& e) {
+          return e.what();
+        }
         return {};
       },
       "");

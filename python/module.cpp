@@ -87,10 +87,11 @@ molecule::AnalysisOptions analysis_options(const py::dict& o) {
   } catch (const alpha::Error& e) {
     throw alpha::Error(std::string("outputs: ") + e.what(), alpha::ErrorKind::Misuse);
   }
-  const std::string ranking = o["ranking"].cast<std::string>();
-  if (ranking != "probability" && ranking != "geometric")
-    throw alpha::Error("ranking: '" + ranking + "' is neither 'probability' nor 'geometric'", alpha::ErrorKind::Misuse);
-  a.ranking = ranking == "geometric" ? molecule::SiteRanking::geometric : molecule::SiteRanking::probability;
+  try {
+    a.ranking = molecule::parse_site_ranking(o["ranking"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("ranking: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
   return a;
 }
 

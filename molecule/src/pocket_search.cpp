@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "alpha/error.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/ligandability_model.hpp"
 #include "molecule/site_features.hpp"
@@ -48,6 +49,12 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
     });
   out.ranking_seconds = seconds_since(ranking_start);
   return out;
+}
+
+SiteRanking parse_site_ranking(const std::string& name) {
+  if (name == "probability") return SiteRanking::probability;
+  if (name == "geometric") return SiteRanking::geometric;
+  throw alpha::Error("'" + name + "' is not a ranking (probability or geometric)", alpha::ErrorKind::Misuse);
 }
 
 }  // namespace molecule

@@ -5,6 +5,7 @@
 // (find_cavities, with the solvent-accessible model's area and volume).
 #pragma once
 #include <memory>
+#include <string>
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/triangulation.hpp"
@@ -17,6 +18,9 @@ namespace molecule {
 // probability (its margin; ties in the geometric order), or by the
 // geometric score as find_cavities ranks them.
 enum class SiteRanking { probability, geometric };
+// "probability" or "geometric" -> the ranking; throws alpha::Error (misuse)
+// naming anything else.
+SiteRanking parse_site_ranking(const std::string& name);
 
 struct PocketSearch {
   std::unique_ptr<alpha::Triangulation> triangulation;
