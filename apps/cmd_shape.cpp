@@ -2,9 +2,11 @@
 // alphapocket shape FILE --alpha-sq V [--weighted] -o OUT.{ply,obj,off,stl}
 //
 // Writes the boundary of the alpha shape at alpha_sq = V as a triangle
-// mesh: its regular triangles, oriented outward, and the vertices they use.
-// Singular simplices (dangling triangles, edges, isolated vertices) are not
-// part of a surface and are only counted in the log.
+// mesh: its regular triangles, oriented outward, and the vertices they use,
+// as a closed 2-manifold (points copied where the shape is pinched:
+// molecule/mesh_export.hpp). Singular simplices (dangling triangles, edges,
+// isolated vertices) are not part of a surface and are only counted in the
+// log.
 #include <memory>
 #include <string>
 #include <utility>
@@ -45,8 +47,8 @@ int run_shape(const ShapeOptions& opt) {
                boundary.singular_triangles.size(), boundary.singular_edges.size(),
                boundary.singular_vertices.size());
   if (info.duplicated_vertices)
-    spdlog::info("{} extra vertex copies (same coordinates) where the surface is not a manifold (tetrahedra meeting "
-                 "at an edge or a vertex only)",
+    spdlog::info("{} extra vertex copies (same coordinates) where the shape is pinched (tetrahedra meeting at an "
+                 "edge or a vertex only): the file is a closed 2-manifold",
                  info.duplicated_vertices);
   if (info.faces == 0)
     spdlog::warn("the alpha shape has no boundary triangles at alpha_sq {}: {} holds an empty mesh", opt.alpha_sq,

@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "alpha/predicates.hpp"
 
@@ -23,6 +26,25 @@ std::string SurfaceReport::summary() const {
     << misoriented_edges << ", non-manifold vertices " << nonmanifold_vertices << ", degenerate " << degenerate_triangles
     << ", components " << components << ", area " << area << ", volume " << volume;
   return s.str();
+}
+
+alpha::SurfaceMesh read_off(const std::string& path) {
+  std::ifstream in(path);
+  std::string magic;
+  std::size_t vertices = 0, faces = 0, edges = 0;
+  in >> magic >> vertices >> faces >> edges;
+  REQUIRE(magic == "OFF");
+  alpha::SurfaceMesh mesh;
+  mesh.points.resize(vertices);
+  for (Vec3& p : mesh.points) in >> p.x >> p.y >> p.z;
+  mesh.triangles.resize(faces);
+  for (auto& t : mesh.triangles) {
+    int corners = 0;
+    in >> corners >> t[0] >> t[1] >> t[2];
+    REQUIRE(corners == 3);
+  }
+  REQUIRE(in);
+  return mesh;
 }
 
 SurfaceReport surface_report(const alpha::SurfaceMesh& mesh) {

@@ -27,6 +27,11 @@ struct SurfaceReport {
 
 SurfaceReport surface_report(const alpha::SurfaceMesh& mesh);
 
+// An ASCII OFF file of triangles with its vertex indices as written (no
+// merging or repair, unlike OpenMesh's reader: what MeshLab checks).
+// REQUIREs a well-formed file.
+alpha::SurfaceMesh read_off(const std::string& path);
+
 // Pairs of triangles that cross or touch other than along a shared edge or
 // at a shared vertex, decided exactly (orientation predicates in exact
 // arithmetic on the float coordinates a file holds); triangles are

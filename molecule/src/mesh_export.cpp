@@ -10,6 +10,8 @@
 #include <sstream>
 #include <system_error>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 // OpenMesh's colour property default-constructs VectorT<unsigned char, 3>
 // without initializing it, which GCC reports where it is instantiated.
@@ -103,12 +105,83 @@ void check_input(const std::string& path, const TriangleMesh& in) {
   }
 }
 
+// The triangles around each edge of the mesh, as the corners the edge
+// starts at (in its triangle's order), in the order they pair up: joined two
+// by two, first with second, third with fourth, ... (or, for a ring with
+// `shifted` set, second with third, ..., last with first). An edge of two
+// triangles is one pair; around an edge of more (solids meeting at an edge
+// only) the triangles alternate in direction by angle, and the ring starts
+// so that each pair bounds a solid wedge: the sheets of the solids stay
+// apart.
+struct EdgeRing {
+  std::vector<std::size_t> corners;
+  bool shifted = false;  // pair across the empty wedges instead
+};
+
+inline std::size_t next_corner(std::size_t c) { return c - c % 3 + (c + 1) % 3; }
+
+std::vector<EdgeRing> edge_rings(const TriangleMesh& in) {
+  const std::size_t corners = 3 * in.triangles.size();
+  auto vertex = [&](std::size_t c) { return in.triangles[c / 3][c % 3]; };
+  struct Edge {
+    alpha::Index lo, hi;
+    std::size_t corner;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(corners);
+  for (std::size_t c = 0; c < corners; ++c) {
+    const alpha::Index a = vertex(c), b = vertex(next_corner(c));
+    edges.push_back({std::min(a, b), std::max(a, b), c});
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const Edge& x, const Edge& y) { return std::tie(x.lo, x.hi, x.corner) < std::tie(y.lo, y.hi, y.corner); });
+  std::vector<EdgeRing> rings;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
+    EdgeRing ring;
+    for (std::size_t k = i; k < j; ++k) ring.corners.push_back(edges[k].corner);
+    auto& around = ring.corners;
+    if (around.size() > 2) {
+      const alpha::Vec3 a = in.points[edges[i].lo], axis = in.points[edges[i].hi] - a;
+      alpha::Vec3 e1 = alpha::cross(axis, std::fabs(axis.x) <= std::fabs(axis.y) ? alpha::Vec3{1, 0, 0} : alpha::Vec3{0, 1, 0});
+      const alpha::Vec3 e2 = alpha::cross(axis, e1);
+      const auto angle = [&](std::size_t c) {
+        const alpha::Vec3 d = in.points[vertex(next_corner(next_corner(c)))] - a;
+        return std::atan2(alpha::dot(d, e2), alpha::dot(d, e1));
+      };
+      std::stable_sort(around.begin(), around.end(), [&](std::size_t x, std::size_t y) { return angle(x) < angle(y); });
+      // Start where the first triangle's outward normal points back from
+      // the turn, i.e. the wedge ahead of it is inside.
+      const std::size_t first = around[0];
+      const alpha::Vec3 p0 = in.points[vertex(first)], p1 = in.points[vertex(next_corner(first))],
+                        p2 = in.points[vertex(next_corner(next_corner(first)))];
+      const alpha::Vec3 normal = alpha::cross(p1 - p0, p2 - p0);
+      const alpha::Vec3 d = p2 - a, ahead = alpha::cross(axis, d - (alpha::dot(d, axis) / alpha::dot(axis, axis)) * axis);
+      if (alpha::dot(normal, ahead) > 0) std::rotate(around.begin(), around.begin() + 1, around.end());
+    }
+    rings.push_back(std::move(ring));
+    i = j;
+  }
+  return rings;
+}
+
 // The vertex copy of each corner (corner 3f+k: vertex k of triangle f), and
 // the number of copies. Corners of one point share a copy when their
-// triangles are joined around it through manifold edges (edges of exactly
-// two triangles, running through them in opposite directions): each copy
-// is one fan, so non-manifold edges and vertices come apart into manifold
-// pieces, as OpenMesh needs. Copies are numbered by point, then by the first
+// triangles are joined around it through edges paired as edge_rings says
+// (two triangles running through the edge in opposite directions): each
+// copy is one fan, so non-manifold edges and vertices come apart into
+// manifold pieces, as OpenMesh needs.
+//
+// Keeping solid wedges apart at an edge ab is not enough where the shape is
+// pinched along ab but its wedges join again around both a and b (a ring of
+// tetrahedra closing on itself at one edge): then each of a and b is one
+// fan, and both copies of the edge would join the same two vertices. There
+// the ring is paired across its empty wedges instead (the surface runs
+// through the pinch as through a thin neck), which splits the fans of a and
+// b apart, so that every edge copy joins its own pair of vertex copies: the
+// file is a closed 2-manifold, with the same triangles (area, volume and
+// orientation unchanged). Copies are numbered by point, then by the first
 // triangle of their fan.
 std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copies) {
   const std::size_t corners = 3 * in.triangles.size();
@@ -122,8 +195,9 @@ std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copi
     for (std::size_t c = 0; c < corners; ++c) copy[c] = number[in.triangles[c / 3][c % 3]];
     return copy;
   }
+  auto vertex = [&](std::size_t c) { return in.triangles[c / 3][c % 3]; };
+  std::vector<EdgeRing> rings = edge_rings(in);
   std::vector<std::size_t> parent(corners);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto find = [&](std::size_t c) {
     while (parent[c] != c) c = parent[c] = parent[parent[c]];
     return c;
@@ -132,55 +206,43 @@ std::vector<std::size_t> corner_copies(const TriangleMesh& in, std::size_t& copi
     a = find(a), b = find(b);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the first corner
   };
-  auto vertex = [&](std::size_t c) { return in.triangles[c / 3][c % 3]; };
-  auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };  // the next corner of its triangle
-
-  struct Edge {
-    alpha::Index lo, hi;
-    std::size_t corner;  // the corner the edge starts at, in its triangle's order
-  };
-  std::vector<Edge> edges;
-  edges.reserve(corners);
-  for (std::size_t c = 0; c < corners; ++c) {
-    const alpha::Index a = vertex(c), b = vertex(next(c));
-    edges.push_back({std::min(a, b), std::max(a, b), c});
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const Edge& x, const Edge& y) { return std::tie(x.lo, x.hi, x.corner) < std::tie(y.lo, y.hi, y.corner); });
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    // Around an edge of more than two triangles (solids meeting at an
-    // edge only) they alternate in direction by angle: pair each with the
-    // next, so that every copy of the edge joins two triangles.
-    std::vector<Edge> around(edges.begin() + i, edges.begin() + j);
-    if (around.size() > 2) {
-      const alpha::Vec3 a = in.points[around[0].lo], axis = in.points[around[0].hi] - a;
-      alpha::Vec3 e1 = alpha::cross(axis, std::fabs(axis.x) <= std::fabs(axis.y) ? alpha::Vec3{1, 0, 0} : alpha::Vec3{0, 1, 0});
-      const alpha::Vec3 e2 = alpha::cross(axis, e1);
-      const auto angle = [&](const Edge& x) {
-        const alpha::Vec3 d = in.points[vertex(next(next(x.corner)))] - a;
-        return std::atan2(alpha::dot(d, e2), alpha::dot(d, e1));
-      };
-      std::stable_sort(around.begin(), around.end(), [&](const Edge& x, const Edge& y) { return angle(x) < angle(y); });
-      // Pair the two triangles of each solid wedge (the sheets stay apart):
-      // start where the first triangle's outward normal points back from
-      // the turn, i.e. the wedge ahead of it is inside.
-      const Edge& first = around[0];
-      const alpha::Vec3 p0 = in.points[vertex(first.corner)], p1 = in.points[vertex(next(first.corner))],
-                        p2 = in.points[vertex(next(next(first.corner)))];
-      const alpha::Vec3 normal = alpha::cross(p1 - p0, p2 - p0);
-      const alpha::Vec3 d = p2 - a, ahead = alpha::cross(axis, d - (alpha::dot(d, axis) / alpha::dot(axis, axis)) * axis);
-      if (alpha::dot(normal, ahead) > 0) std::rotate(around.begin(), around.begin() + 1, around.end());
-    }
-    for (std::size_t k = 0; k + 1 < around.size(); k += 2) {
-      const std::size_t c = around[k].corner, d = around[k + 1].corner;
-      if (vertex(c) == vertex(next(d))) {  // a->b in one triangle, b->a in the other
-        unite(c, next(d));
-        unite(next(c), d);
+  auto join = [&]() {
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    for (const EdgeRing& ring : rings) {
+      const std::size_t n = ring.corners.size(), s = ring.shifted ? 1 : 0;
+      for (std::size_t k = 0; k + 1 < n; k += 2) {
+        const std::size_t c = ring.corners[(k + s) % n], d = ring.corners[(k + 1 + s) % n];
+        if (vertex(c) == vertex(next_corner(d))) {  // a->b in one triangle, b->a in the other
+          unite(c, next_corner(d));
+          unite(next_corner(c), d);
+        }
       }
     }
-    i = j;
+  };
+  // Shifting a ring splits the fans at its ends, never joins any, so rings
+  // are shifted until no two copies of an edge share their ends; within one
+  // round, only rings with no point in common (two shifts at one point
+  // could join again what each splits).
+  join();
+  for (bool shifted_some = true; shifted_some;) {
+    shifted_some = false;
+    std::vector<char> touched(in.points.size(), 0);
+    for (EdgeRing& ring : rings) {
+      const std::size_t n = ring.corners.size();
+      if (n <= 2 || ring.shifted) continue;
+      std::vector<std::pair<std::size_t, std::size_t>> ends;  // the vertex copies of each edge copy
+      for (std::size_t k = 0; k + 1 < n; k += 2) {
+        const std::size_t c = ring.corners[k], a = find(c), b = find(next_corner(c));
+        ends.emplace_back(std::min(a, b), std::max(a, b));
+      }
+      std::sort(ends.begin(), ends.end());
+      const alpha::Index a = vertex(ring.corners[0]), b = vertex(next_corner(ring.corners[0]));
+      if (std::adjacent_find(ends.begin(), ends.end()) == ends.end() || touched[a] || touched[b]) continue;
+      ring.shifted = true;
+      touched[a] = touched[b] = 1;
+      shifted_some = true;
+    }
+    if (shifted_some) join();
   }
 
   // Number the fans by point, then by first corner (a root is its class's first corner).

@@ -83,6 +83,24 @@ case "$case_name" in
       done
     done
     ;;
+  shape)
+    # The alpha-shape polytope of `shape`: closed and two-manifold where
+    # the shape is pinched too (at these alphas 1a26A and 1UYD have edges of
+    # four triangles), its volume that of `spectrum`.
+    for file in "$pdb" "$root/tests/data/1UYD.pdb"; do
+      name=$(basename "$file" .pdb)
+      for alpha_sq in -1 0 4; do
+        "$exe" -q spectrum "$file" --alpha-sq "$alpha_sq" --json >"$tmp/spectrum.json"
+        expected=$(grep -o '"volume":[0-9.e+]*' "$tmp/spectrum.json" | cut -d: -f2)
+        run -q shape "$file" --alpha-sq "$alpha_sq" -o "$tmp/$name.ply"
+        expect_success
+        measure "$tmp/$name.ply"
+        expect_closed_manifold "$name shape at alpha_sq $alpha_sq"
+        echo "$name alpha_sq $alpha_sq: MeshLab volume $(volume) (spectrum $expected)"
+        within "$name shape volume" "$(volume)" "$expected" 1e-5
+      done
+    done
+    ;;
   project)
     # meshlab.mlp opens the surface and every cast at once.
     run pockets "$pdb" -o "$tmp/o"

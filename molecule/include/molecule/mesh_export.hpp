@@ -29,8 +29,10 @@
 // OpenMesh holds only manifold meshes. Where the triangles do not form one
 // (two alpha-shape tetrahedra meeting at an edge or a vertex only), a point
 // is written once per fan of triangles around it (triangles joined through
-// edges of exactly two triangles, of opposite directions), so the file
+// pairs of triangles of opposite directions around each edge), so the file
 // holds every triangle and some points more than once (same coordinates).
+// The boundary of a union of tetrahedra comes out a closed 2-manifold
+// (mesh_export.cpp, corner_copies, says how pinched edges are resolved).
 //
 // While writing, OpenMesh's own log streams (omerr, omlog, omout) are
 // silenced. OpenMesh's writers and streams are process-wide, so the
