@@ -19,9 +19,12 @@
 // A cast (cells_mesh) is the set of points outside the eroded body whose
 // space is counted in the cells' shares (ErodedUnion::share_cell): the free
 // space in the cells, and the probe layer whose nearest point of F lies in
-// them. Its volume approaches the cells' layer shares plus their free
-// space (a cavity's ms_volume); it is capped flat where the cells end in
-// free space (a pocket's mouths).
+// them; it is capped flat where the cells end in free space (a pocket's
+// mouths). Its volume approaches the cells' layer shares plus their free
+// space (a cavity's ms_volume) when the cells are closed by triangles of
+// the dual complex (a void); else only roughly: those shares are
+// fractional (alpha/union_of_balls.hpp), exact in sum only over such
+// closed regions.
 #pragma once
 #include <span>
 #include <vector>

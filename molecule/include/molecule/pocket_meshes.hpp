@@ -11,7 +11,10 @@
 //   casts     per pocket and void, the space it holds as the molecular
 //             surface bounds it (alpha::cells_mesh of its cells), capped
 //             flat at its mouths, in its colour, every vertex's site its
-//             rank by colour. Its volume approaches the cavity's ms_volume.
+//             rank by colour. Its volume approaches a void's ms_volume;
+//             a pocket's only roughly (README, Meshes: ms_volume's shares
+//             are fractional, exact only over regions closed by the dual
+//             complex).
 //
 // Triangle size is set by `resolution`, the lattice spacing in A.
 #pragma once
