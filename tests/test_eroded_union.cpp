@@ -126,6 +126,62 @@ TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
   }
 }
 
+TEST_CASE("eroded union: share_cell is the cell whose cone holds the nearest point, from any hint", "[eroded]") {
+  // Against every cell around the feature (a sphere's ball vertex, a
+  // circle's edge): the point lies on the inner side of each facet
+  // through the feature. Unpadded, some balls reach beyond the hull: their
+  // outer directions are infinite cells'.
+  for (const bool pad : {false, true}) {
+    const Balls balls = cluster(40, 41, 8.0, 1.6, 3.4);
+    const testing::BallUnion u(balls, pad);
+    const ErodedUnion e(*u.u, 1.4);
+    const Triangulation& t = *u.t;
+    const Simplices& s = u.ac->simplices();
+    const auto holders = [&](const ErodedUnion::Nearest& n) {
+      std::vector<Index> feature{n.which};
+      if (n.on == ErodedUnion::Nearest::On::circle) feature = {s.edge(n.which)[0], s.edge(n.which)[1]};
+      std::vector<Index> out;
+      for (Index c = 0; c < t.num_cells(); ++c) {
+        if (t.is_infinite(c)) continue;
+        const auto& v = t.cell(c).v;
+        const auto is_feature = [&](Index x) { return std::find(feature.begin(), feature.end(), x) != feature.end(); };
+        if (std::count_if(v.begin(), v.end(), is_feature) != std::ptrdiff_t(feature.size())) continue;
+        bool inside = true;
+        for (int k = 0; k < 4 && inside; ++k) {
+          if (is_feature(v[k])) continue;
+          std::vector<Vec3> f;
+          for (int j = 0; j < 4; ++j)
+            if (j != k) f.push_back(t.point(v[j]));
+          const Vec3 normal = cross(f[1] - f[0], f[2] - f[0]);
+          inside = dot(normal, n.point - f[0]) * dot(normal, t.point(v[k]) - f[0]) >= 0;
+        }
+        if (inside) out.push_back(c);
+      }
+      return out;
+    };
+    std::size_t checked = 0, infinite = 0;
+    Index previous = kNone;
+    for (const Vec3& x : random_points(3000, 43, 12.0)) {
+      const ErodedUnion::Nearest n = e.nearby(x, 1.4).nearest(x, 1.4);
+      if (n.on != ErodedUnion::Nearest::On::sphere && n.on != ErodedUnion::Nearest::On::circle) continue;
+      const std::vector<Index> expected = holders(n);
+      for (const Index hint : {kNone, previous, Index(checked % t.num_cells())}) {
+        const Index c = e.share_cell(x, n, hint);
+        INFO("pad " << pad << " hint " << hint << " cell " << c);
+        if (expected.empty())
+          CHECK(t.is_infinite(c));
+        else
+          CHECK(std::find(expected.begin(), expected.end(), c) != expected.end());
+        previous = c;
+      }
+      ++checked;
+      infinite += expected.empty();
+    }
+    CHECK(checked > 300);
+    if (!pad) CHECK(infinite > 0);  // directions beyond the hull were asked too
+  }
+}
+
 TEST_CASE("eroded union: r = 0 is the union, bad r refused", "[eroded]") {
   const Balls balls = cluster(10, 31, 4.0, 1.5, 3.0);
   const Union u(balls);
