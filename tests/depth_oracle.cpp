@@ -124,4 +124,30 @@ std::pair<double, double> DepthOracle::volume_deeper(double depth, long samples,
   return {box * f, box * std::sqrt(f * (1 - f) / samples)};
 }
 
+std::pair<std::vector<double>, std::vector<double>> DepthOracle::cell_volumes_deeper(double depth, long samples,
+                                                                                     std::uint64_t seed) const {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<long> hits(c_.size(), 0);
+  for (long k = 0; k < samples; ++k) {
+    const Vec3 x{lo_.x + u(rng) * (hi_.x - lo_.x), lo_.y + u(rng) * (hi_.y - lo_.y), lo_.z + u(rng) * (hi_.z - lo_.z)};
+    if (!deeper(x, depth)) continue;
+    std::size_t cell = 0;
+    double least = HUGE_VAL;
+    for (std::size_t i = 0; i < c_.size(); ++i) {
+      const double power = dot(x - c_[i], x - c_[i]) - r_[i] * r_[i];
+      if (power < least) least = power, cell = i;
+    }
+    ++hits[cell];
+  }
+  const double box = (hi_.x - lo_.x) * (hi_.y - lo_.y) * (hi_.z - lo_.z);
+  std::vector<double> volume, sigma;
+  for (long h : hits) {
+    const double f = double(h) / samples;
+    volume.push_back(box * f);
+    sigma.push_back(box * std::sqrt(f * (1 - f) / samples));
+  }
+  return {volume, sigma};
+}
+
 }  // namespace testing

@@ -27,6 +27,10 @@ public:
   // Monte Carlo estimate of the volume of {x : deeper(x, depth)}, and its
   // standard error, from `samples` uniform points of the union's bounding box.
   std::pair<double, double> volume_deeper(double depth, long samples, std::uint64_t seed) const;
+  // The same per ball, of the part in its power cell (the ball of least
+  // power |x - c|^2 - r^2, by brute force): estimates and standard errors.
+  std::pair<std::vector<double>, std::vector<double>> cell_volumes_deeper(double depth, long samples,
+                                                                          std::uint64_t seed) const;
 
 private:
   std::vector<alpha::Vec3> c_;

@@ -2,7 +2,8 @@
 // ErodedUnion (the solvent-excluded body of a union of balls) against
 // closed forms and a Monte Carlo estimate from an independent nearest-point
 // test (depth_oracle.hpp); its area against the derivative of its volume
-// in r; its per-cell shares against its totals.
+// in r; its per-cell and per-ball shares against its totals; the per-ball
+// shares against Monte Carlo by power cell and their own r-derivative.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -191,4 +192,113 @@ TEST_CASE("eroded union: r = 0 is the union, bad r refused", "[eroded]") {
   CHECK_THROWS_AS(ErodedUnion(*u.u, -1), Error);
   CHECK_THROWS_AS(ErodedUnion(*u.u, std::nan("")), Error);
   CHECK_THROWS_AS(ErodedUnion(*u.u, 3.5), Error);  // larger than every ball
+}
+
+namespace {
+
+// Per ball: the eroded body's volume in its power cell (ball_volumes less
+// the layer's part) and its surface's area there.
+struct PerBall {
+  LayerShare total;
+  std::vector<double> volume, area;
+};
+
+PerBall per_ball(const Union& u, double r, std::size_t n) {
+  const ErodedUnion e(*u.u, r);
+  std::vector<LayerShare> shares;
+  PerBall out{e.layer(shares), {}, {}};
+  for (std::size_t i = 0; i < n; ++i) {
+    out.volume.push_back(u.u->ball_volumes()[i] - shares[i].volume);
+    out.area.push_back(shares[i].area);
+  }
+  for (std::size_t i = n; i < shares.size(); ++i) {  // the padding's far points get nothing
+    CHECK(shares[i].volume == 0);
+    CHECK(shares[i].area == 0);
+  }
+  return out;
+}
+
+double sum(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("eroded union: per ball, the shares sum to the totals, which layer() gives alone", "[eroded]") {
+  std::vector<std::pair<Balls, double>> cases{{cluster(40, 21, 9.0, 1.6, 3.4), 1.4},
+                                              {cluster(12, 22, 3.0, 2.4, 3.4), 1.4},
+                                              {cluster(10, 13, 5.0, 2.4, 3.4), 2.0}};
+  Balls cube;  // degenerate: 8 spheres through one point; coplanar and duplicate centres
+  for (const Vec3& p : testing::grid_points(2, 2.0)) cube.centers.push_back(p);
+  cube.radii.assign(8, std::sqrt(3.0));
+  cases.push_back({cube, 1.0});
+  cases.push_back({{{{0, 0, 0}, {2.5, 0, 0}, {0, 2.5, 0}, {2.5, 2.5, 0}, {1.25, 1.25, 0}, {1.25, 1.25, 0}},
+                    {2, 2, 2, 2, 1.5, 1.5}},
+                   1.2});
+  for (const auto& [balls, r] : cases) {
+    const Union u(balls);
+    const PerBall p = per_ball(u, r, balls.radii.size());
+    const LayerShare alone = ErodedUnion(*u.u, r).layer();
+    CHECK(p.total.volume == alone.volume);  // bit for bit: the per-ball split does not touch the totals
+    CHECK(p.total.area == alone.area);
+    CHECK(sum(p.volume) == Approx(u.u->volume() - alone.volume).epsilon(1e-12));
+    CHECK(sum(p.area) == Approx(alone.area).epsilon(1e-12));
+    for (std::size_t i = 0; i < p.volume.size(); ++i) {
+      INFO("ball " << i << " volume " << p.volume[i] << " area " << p.area[i]);
+      // Near 0 (a ball buried but for a sliver), the quadrature's error.
+      CHECK(p.volume[i] >= -5e-3);
+      CHECK(p.area[i] >= -1e-3);
+    }
+  }
+}
+
+TEST_CASE("eroded union: per ball, closed forms and symmetry", "[eroded]") {
+  {  // one ball: the eroded body is the ball of radius R - r
+    const Union u(Balls{{{1, 2, 3}}, {3.2}});
+    const PerBall p = per_ball(u, 1.4, 1);
+    CHECK(p.volume[0] == Approx(4 * kPi / 3 * 1.8 * 1.8 * 1.8).epsilon(1e-13));
+    CHECK(p.area[0] == Approx(4 * kPi * 1.8 * 1.8).epsilon(1e-13));
+  }
+  // Two equal balls, a torus (rho > r) and a spindle torus (rho < r): the
+  // radical plane is the mirror plane, the shares are equal.
+  for (const double d : {3.0, 4.4}) {
+    const Union u(Balls{{{0, 0, 0}, {d, 0, 0}}, {2.5, 2.5}});
+    const PerBall p = per_ball(u, 1.4, 2);
+    CHECK(p.volume[0] == Approx(p.volume[1]).epsilon(1e-12));
+    CHECK(p.area[0] == Approx(p.area[1]).epsilon(1e-12));
+  }
+  // Four equal balls on a regular tetrahedron's corners: equal shares.
+  const double a = 2.2;
+  const Union u(Balls{{{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}}, {3.3, 3.3, 3.3, 3.3}});
+  const PerBall p = per_ball(u, 1.4, 4);
+  for (int i = 1; i < 4; ++i) {
+    CHECK(p.volume[i] == Approx(p.volume[0]).epsilon(1e-9));
+    CHECK(p.area[i] == Approx(p.area[0]).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("eroded union: per ball, against Monte Carlo by power cell and the area against -dV/dr", "[eroded]") {
+  std::vector<std::pair<Balls, double>> cases{
+      {{{{0, 0, 0}, {4.4, 0, 0}}, {2.0, 2.9}}, 1.4},  // unequal spindle torus
+      {cluster(5, 11, 2.5, 2.4, 3.4), 1.4},
+      {cluster(8, 12, 3.5, 2.4, 3.4), 1.4},
+      // a small ball's centre outside its power cell (as an O next to a C)
+      {{{{0, 0, 0}, {1.3, 0, 0}, {2.5, 1.4, 0}, {2.2, -0.4, 1.5}}, {2.8, 3.3, 3.0, 3.2}}, 1.4}};
+  for (const auto& [balls, r] : cases) {
+    const Union u(balls);
+    const std::size_t n = balls.radii.size();
+    const PerBall p = per_ball(u, r, n);
+    const auto [mc, sigma] = testing::DepthOracle(balls.centers, balls.radii, r).cell_volumes_deeper(r, 400000, 17);
+    const double h = 1e-4;
+    const PerBall inner = per_ball(u, r + h, n), outer = per_ball(u, r - h, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      INFO("balls " << n << " ball " << i << " volume " << p.volume[i] << " MC " << mc[i] << " +- " << sigma[i]);
+      CHECK(std::fabs(p.volume[i] - mc[i]) <= 4.5 * sigma[i] + 5e-3);
+      const double derivative = (inner.volume[i] - outer.volume[i]) / (2 * h);
+      INFO("area " << p.area[i] << " -dV/dr " << -derivative);
+      CHECK(p.area[i] == Approx(-derivative).epsilon(1e-3).margin(1e-3));
+    }
+  }
 }

@@ -20,8 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// erode >= 0: the MS surface too, the union eroded by that probe.
-Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, std::optional<double> erode) {
+// erode >= 0: the MS surface too, the union eroded by that probe; per_atom: its per-atom split.
+Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, std::optional<double> erode,
+                 bool per_atom = false) {
   if (points.size() != weights.size())
     alpha::fail("surface: " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
                     " balls",
@@ -48,9 +49,16 @@ Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, s
   s.ball_volumes.assign(volumes.begin(), volumes.begin() + s.balls);
   if (erode) {
     start = std::chrono::steady_clock::now();
-    const alpha::LayerShare layer = alpha::ErodedUnion(u, *erode).layer();
+    const alpha::ErodedUnion eroded(u, *erode);
+    std::vector<alpha::LayerShare> shares;
+    const alpha::LayerShare layer = per_atom ? eroded.layer(shares) : eroded.layer();
     s.ms_volume = u.volume() - layer.volume;
     s.ms_area = layer.area;
+    if (per_atom)
+      for (std::size_t i = 0; i < s.balls; ++i) {
+        s.ms_ball_volumes.push_back(volumes[i] - shares[i].volume);
+        s.ms_ball_areas.push_back(shares[i].area);
+      }
     s.excluded_seconds = seconds_since(start);
   }
   return s;
@@ -63,7 +71,8 @@ Surface measure_surface(const std::vector<Atom>& atoms, const SurfaceOptions& op
     alpha::fail("surface: the probe must be a number >= 0", alpha::ErrorKind::Misuse);
   AtomBalls balls = atom_balls(atoms, options.probe);
   return measured(std::move(balls.points), std::move(balls.weights),
-                  options.excluded ? std::optional<double>(options.probe) : std::nullopt);
+                  options.excluded ? std::optional<double>(options.probe) : std::nullopt,
+                  options.excluded && options.excluded_per_atom);
 }
 
 Surface measure_balls(std::vector<alpha::Vec3> centres, std::vector<double> weights) {

@@ -58,6 +58,25 @@
 // around the arc's edge, a vertex to the cell on its side of its triangle.
 // The totals are summed from the same pieces; the finite cells' shares sum
 // to them when no ball reaches outside the convex hull.
+//
+// Per ball (layer(per_ball)), every point goes to the power cell holding
+// it, the rule of UnionOfBalls' per-ball area and volume: ball i gets the
+// layer's volume and the eroded surface's area inside its power cell P_i,
+// so the eroded body's volume in P_i is ball_volumes()[i] less its layer
+// share (never more than it, never negative but for the quadrature's
+// error), and these sum to the totals. The pieces are split without
+// touching the totals: a shell under a patch of sphere i lies in P_i when
+// p_i does (P_i is convex and holds the patch); else the part beyond a
+// radical plane passing behind p_i (a small ball beside a large one, as an
+// O on a C) goes to that neighbour, integrated over its latitude band in
+// closed-form arcs, and the same amount is taken from i. Toroidal and
+// reentrant pieces are integrated again ray by ray, psi (the cone) cut at
+// the power planes of their own balls, each ray cut where the power cell
+// changes along it (power differences are linear in t), and their totals
+// are divided in those proportions: exact sums, per-ball errors of the
+// quadrature (on 60 atoms of 1FKG: each atom's area equals minus the
+// derivative of its volume in r to 5e-3, its volume a Monte Carlo count by
+// power cell within 4.5 sigma).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -92,6 +111,11 @@ public:
   // union's boundary). The eroded body's volume is balls.volume() minus
   // its volume; the eroded body's boundary area is its area.
   LayerShare layer() const;
+  // The same totals (bit for bit), and per input point (balls' indices)
+  // the layer's volume and the eroded surface's area inside its power cell
+  // (see above): they sum to the totals up to rounding; 0 for hidden
+  // points. About 3.5 times layer()'s time.
+  LayerShare layer(std::vector<LayerShare>& per_ball) const;
 
   // The share of cell c (see above); {} for an infinite cell.
   LayerShare cell_share(Index c) const;
@@ -159,6 +183,7 @@ public:
 
 private:
   class Integrator;
+  LayerShare measure(std::vector<LayerShare>* per_ball) const;
   const UnionOfBalls* balls_;
   double r_;
   double tolerance_;  // lengths closer than this are equal

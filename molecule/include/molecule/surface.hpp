@@ -22,6 +22,7 @@ namespace molecule {
 struct SurfaceOptions {
   double probe = 1.4;     // A, added to every atom radius (0: van der Waals balls)
   bool excluded = true;   // also the MS surface (several times the SA's time)
+  bool excluded_per_atom = false;  // and its area and volume per atom (about twice the MS time)
 };
 
 struct Surface {
@@ -33,6 +34,11 @@ struct Surface {
   std::optional<double> ms_area, ms_volume;
   std::vector<double> ball_areas;    // SA area of each ball (atom), in input order; 0 for a buried one
   std::vector<double> ball_volumes;  // SA volume of each: its ball within its power cell (sum: sa_volume)
+  // With SurfaceOptions::excluded_per_atom: the MS surface's area and the
+  // volume it encloses inside each atom's power cell (the cell of
+  // ball_volumes), in input order; they sum to ms_area and ms_volume up to
+  // rounding. Buried atoms may get volume (their cells reach the surface).
+  std::vector<double> ms_ball_areas, ms_ball_volumes;
   std::size_t hidden = 0;          // balls inside others (no power cell)
   double complex_seconds = 0, union_seconds = 0, excluded_seconds = 0;  // wall clock, for logs
 };

@@ -1,0 +1,805 @@
+// SPDX-License-Identifier: Apache-2.0
+// The integrals of ErodedUnion's pieces (eroded_union.cpp: the totals and
+// the cells' shares; eroded_union_shares.cpp: the per-atom split), and the
+// helpers they share. Internal: included by those two files only.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <vector>
+
+#include "alpha/eroded_union.hpp"
+#include "compensated_sum.hpp"
+
+namespace alpha {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2 * kPi;
+// 8-node Gauss-Legendre rule on [-1, 1], nodes ascending.
+constexpr std::array<double, 8> kNode{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                      -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                      0.7966664774136267,  0.9602898564975363};
+constexpr std::array<double, 8> kWeight{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                                        0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                        0.2223810344533745, 0.1012285362903763};
+constexpr double kCutPrecision = 1e-8;  // of tau, relative to r
+constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between two nodes
+constexpr double kMaxPiece = kPi / 4;
+
+double wrap(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+}  // namespace
+
+namespace eroded_union_detail {
+
+using Arc = ErodedUnion::Arc;
+
+// The circle where the spheres of an edge (p_i, w_i), (p_j, w_j) meet, with a frame:
+// center o, unit axis w from p_i to p_j, unit e1, e2 spanning its plane;
+// z_i, z_j: the centers' coordinates along w from o.
+struct Circle {
+  Vec3 o, w, e1, e2;
+  double rho = 0, z_i = 0, z_j = 0;
+
+  Vec3 radial(double phi) const { return std::cos(phi) * e1 + std::sin(phi) * e2; }
+  // The direction at angle psi from the plane, inwards from the circle's point at `radial`.
+  Vec3 ray(const Vec3& radial, double psi) const { return -std::cos(psi) * radial + std::sin(psi) * w; }
+  double angle(const Vec3& v) const { return wrap(std::atan2(dot(v, e2), dot(v, e1))); }
+};
+
+// A point of F found nearer to x than t: on a sphere (the nearest point
+// of a hood ball), a circle (of a hood circle) or a vertex.
+struct Nearer {
+  enum Kind { kNone, kBall, kCircle, kVertex } kind = kNone;
+  std::size_t which = 0;  // in the hood's list
+};
+
+// [a, b] cut where a predicate changes, from its values at the 8 Gauss
+// nodes: each value extends to the next change, located by bisection
+// between the nodes that differ.
+struct Segment {
+  double lo, hi;
+  bool holds;
+};
+
+// The balls whose power cells can hold the points of a piece (the
+// piece's balls and their neighbours): power_m(x) = |x - p|^2 - w.
+struct Site {
+  Vec3 p;
+  double w;
+  Index id;
+};
+
+// One piece's volume and area per power cell, integrated at nodes: scaled
+// to the piece's total when added (see add_scaled).
+struct PieceShares {
+  std::vector<std::pair<Index, LayerShare>> parts;
+  void add(Index id, double volume, double area) {
+    for (auto& [k, x] : parts)
+      if (k == id) {
+        x.volume += volume;
+        x.area += area;
+        return;
+      }
+    parts.push_back({id, {volume, area}});
+  }
+};
+
+// A spherical triangle of directions (corners a, b, c) in geodesic polar
+// coordinates about a: u(s, sigma) lies on the great circle from a to the
+// point m(sigma) of the arc from b to c (both spherical interpolations),
+// at s of the angle theta(sigma) between them. The solid angle element is
+// sin(s theta) theta beta'(sigma), beta the azimuth of m about a,
+// beta' = a.(m x m') / sin^2 theta: smooth however wide the triangle.
+struct SphericalTriangle {
+  std::array<Vec3, 3> dir;
+  double gamma;  // the angle from b to c
+  explicit SphericalTriangle(const std::array<Vec3, 3>& d)
+      : dir(d), gamma(std::atan2(norm(cross(d[1], d[2])), dot(d[1], d[2]))) {}
+  Vec3 direction(double s, double sigma, double* jacobian) const {
+    const double sg = std::sin(gamma);
+    const Vec3 m = sg > 0 ? (1 / sg) * (std::sin((1 - sigma) * gamma) * dir[1] + std::sin(sigma * gamma) * dir[2])
+                          : dir[1];
+    const double theta = std::atan2(norm(cross(dir[0], m)), dot(dir[0], m)), st = std::sin(theta);
+    if (jacobian) {
+      *jacobian = 0;  // a flat triangle
+      if (st > 0 && sg > 0) {
+        const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
+        *jacobian = std::sin(s * theta) * theta * std::fabs(dot(dir[0], cross(m, dm))) / (st * st);
+      }
+    }
+    return st > 0 ? (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m) : dir[0];
+  }
+};
+
+}  // namespace eroded_union_detail
+
+using namespace eroded_union_detail;
+
+namespace {
+
+
+using Arc = ErodedUnion::Arc;
+using Nearest = ErodedUnion::Nearest;
+
+
+// Node k of the Gauss rule on [a, b], and its weight.
+double node(double a, double b, int k) { return (a + b) / 2 + (b - a) / 2 * kNode[k]; }
+double weight(double a, double b, int k) { return (b - a) / 2 * kWeight[k]; }
+
+bool full(const Arc& a) { return a.length >= kTwoPi; }
+
+// The parts of `set` inside `a`.
+std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
+  if (full(a)) return {set.begin(), set.end()};
+  std::vector<Arc> out;
+  for (const Arc& x : set) {
+    if (full(x)) {
+      out.push_back(a);
+      continue;
+    }
+    const double s = wrap(x.begin - a.begin);
+    for (const double start : {s, s - kTwoPi}) {
+      const double lo = std::max(start, 0.0), hi = std::min(start + x.length, a.length);
+      if (hi > lo) out.push_back({wrap(a.begin + lo), hi - lo});
+    }
+  }
+  return out;
+}
+
+// The parts of `set` where a cos phi + b sin phi <= c.
+std::vector<Arc> where_below(const std::vector<Arc>& set, double a, double b, double c) {
+  const double m = std::hypot(a, b);
+  if (c >= m) return set;
+  if (c <= -m) return {};
+  // cos(phi - phi0) <= c / m: phi at least delta from phi0.
+  const double delta = std::atan2(std::sqrt((m - c) * (m + c)), c);
+  return clip(set, {wrap(std::atan2(b, a) + delta), kTwoPi - 2 * delta});
+}
+
+
+// Whether the direction (x, y) in a circle's frame is on one of its arcs
+// (ends: the arcs' end directions), by the signs of cross products.
+bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double x, double y) {
+  for (std::size_t k = 0; k < set.size(); ++k) {
+    if (full(set[k])) return true;
+    const double after_begin = ends[k].cos_begin * y - ends[k].sin_begin * x;
+    const double before_end = x * ends[k].sin_end - y * ends[k].cos_end;
+    if (set[k].length <= kPi ? after_begin >= 0 && before_end >= 0 : after_begin >= 0 || before_end >= 0) return true;
+  }
+  return false;
+}
+
+
+// A frame about the unit axis w (only w, e1, e2 set).
+Circle circle_of_axis(const Vec3& w) {
+  Circle c;
+  c.w = w;
+  // e1: w crossed with the coordinate axis it is least aligned with.
+  const double ax = std::fabs(w.x), ay = std::fabs(w.y), az = std::fabs(w.z);
+  const Vec3 axis = ax <= ay && ax <= az ? Vec3{1, 0, 0} : ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  const Vec3 e = cross(w, axis);
+  c.e1 = (1 / norm(e)) * e;
+  c.e2 = cross(w, c.e1);
+  return c;
+}
+
+Circle circle_of(const Triangulation& t, const std::array<Index, 2>& edge) {
+  const Vec3 &pi = t.point(edge[0]), &pj = t.point(edge[1]);
+  const double wi = t.weight(edge[0]), wj = t.weight(edge[1]);
+  Circle c;
+  const Vec3 d = pj - pi;
+  const double len = norm(d);
+  c.w = (1 / len) * d;
+  const double a = (len * len + wi - wj) / (2 * len);
+  c.o = pi + a * c.w;
+  c.rho = std::sqrt(std::max(0.0, (std::sqrt(wi) - a) * (std::sqrt(wi) + a)));
+  const Circle frame = circle_of_axis(c.w);
+  c.e1 = frame.e1;
+  c.e2 = frame.e2;
+  c.z_i = -a;
+  c.z_j = len - a;
+  return c;
+}
+
+// int_0^T |rho - t c| t dt, c = cos psi > 0.
+double ray_volume(double rho, double c, double T) {
+  const auto f = [&](double t) { return rho * t * t / 2 - c * t * t * t / 3; };
+  if (c * T <= rho) return f(T);
+  const double t0 = rho / c;  // the ray crosses the circle's axis
+  return 2 * f(t0) - f(T);
+}
+
+// int_a^b g(psi) dpsi over the wedge's angle, split where r cos psi = rho
+// (the torus crosses its axis) so that `smooth(lo, hi, crossing)` sees one
+// sign of rho - r cos psi.
+template <class Smooth>
+double over_wedge(double rho, double r, double a, double b, Smooth smooth) {
+  if (rho >= r) return smooth(a, b, false);
+  const double psi0 = std::atan2(std::sqrt((r - rho) * (r + rho)), rho);
+  double sum = 0;
+  const std::array<double, 4> cut{a, std::clamp(-psi0, a, b), std::clamp(psi0, a, b), b};
+  for (int k = 0; k < 3; ++k)
+    if (cut[k + 1] > cut[k]) sum += smooth(cut[k], cut[k + 1], k == 1);
+  return sum;
+}
+
+// int_a^b |rho - r cos psi| r dpsi.
+double wedge_area(double rho, double r, double a, double b) {
+  return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
+    const double x = r * (rho * (hi - lo) - r * (std::sin(hi) - std::sin(lo)));
+    return crossing ? -x : x;
+  });
+}
+
+// int_a^b ray_volume(rho, cos psi, r) dpsi.
+double wedge_volume(double rho, double r, double a, double b) {
+  return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
+    const double x = rho * r * r / 2 * (hi - lo) - r * r * r / 3 * (std::sin(hi) - std::sin(lo));
+    // Past the axis: rho^3 / (3 cos^2 psi) - x's integrand, by 2 f(t0) - f(r).
+    return crossing ? rho * rho * rho / 3 * (std::tan(hi) - std::tan(lo)) - x : x;
+  });
+}
+
+// Where a predicate that holds at a and not at b (or the reverse) changes.
+template <class Predicate>
+double change(double a, double b, Predicate holds, int bisections = kEdgeBisections) {
+  const bool at_a = holds(a);
+  for (int k = 0; k < bisections; ++k) {
+    const double mid = (a + b) / 2;
+    (holds(mid) == at_a ? a : b) = mid;
+  }
+  return (a + b) / 2;
+}
+
+template <class Predicate>
+std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_node, Predicate holds) {
+  std::vector<Segment> out;
+  double start = a;
+  for (int k = 0; k < 8; ++k) {
+    if (k < 7 && at_node[k] == at_node[k + 1]) continue;
+    const double end = k == 7 ? b : change(node(a, b, k), node(a, b, k + 1), holds);
+    out.push_back({start, end, at_node[k]});
+    start = end;
+  }
+  return out;
+}
+
+
+// Volumes and areas of pieces, summed compensated in the order added.
+struct LayerSum {
+  Sum volume, area;
+  void add(const LayerShare& x) {
+    volume.add(x.volume);
+    area.add(x.area);
+  }
+  LayerShare value() const { return {volume.value(), area.value()}; }
+};
+
+constexpr std::size_t kNoCover = std::size_t(-1);
+
+
+}  // namespace
+
+// What can be within reach of a point (2r of a piece): balls whose sphere
+// comes near, the circles of edges of K between them, boundary vertices.
+struct ErodedUnion::Nearby::Hood {
+  struct Ball {
+    Vec3 c;
+    double radius, radius_sq;
+    Index id;
+    mutable std::size_t cover = kNoCover;  // see on_boundary
+  };
+  std::vector<Ball> balls;  // by id
+  std::vector<std::pair<Index, Circle>> circles;
+  std::vector<std::size_t> vertices;
+  std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
+  mutable std::vector<std::pair<double, std::size_t>> holding;  // nearest()'s scratch
+  // The last point clear() found nearer: the next tests (nearby points)
+  // try it first.
+  mutable Nearer last;
+};
+
+// The integrals of the pieces of one ErodedUnion.
+class ErodedUnion::Integrator {
+  friend class ErodedUnion;  // nearby() gathers
+
+public:
+  using Hood = Nearby::Hood;
+
+  // The nearest point of F to x, if nearer than limit (see Nearest): on a
+  // sphere whose ball holds x (x's radial projection, kept when on the
+  // boundary), on an arc (the circle's nearest point, kept when on an
+  // arc) or a boundary vertex; the nearest of these is the nearest point.
+  Nearest nearest(const Hood& h, const Vec3& x, double limit) const {
+    using On = Nearest::On;
+    Nearest best{On::far, limit, x, kNone};
+    // The balls holding x, nearest sphere first: the first whose radial
+    // projection of x lies on the boundary gives the nearest sphere point
+    // (the boundary test is the costly part: mostly one is needed).
+    std::vector<std::pair<double, std::size_t>>& holding = h.holding;
+    holding.clear();
+    for (std::size_t k = 0; k < h.balls.size(); ++k) {
+      const Hood::Ball& b = h.balls[k];
+      const Vec3 d = x - b.c;
+      const double dd = dot(d, d);
+      if (dd >= b.radius_sq) continue;
+      const double dist = b.radius - std::sqrt(dd);
+      if (dist >= limit) return best;  // F lies outside this ball: at least dist away
+      holding.emplace_back(dist, k);
+    }
+    bool in_union = !holding.empty();
+    std::sort(holding.begin(), holding.end());
+    for (const auto& [dist, k] : holding) {
+      const Hood::Ball& b = h.balls[k];
+      const Vec3 d = x - b.c;
+      const double rd = std::sqrt(dot(d, d));
+      if (rd == 0) continue;
+      const Vec3 q = b.c + (b.radius / rd) * d;
+      if (on_boundary(b.id, q, b.cover)) {
+        best = {On::sphere, dist, q, b.id};
+        break;
+      }
+    }
+    for (std::size_t k = 0; k < h.buried.size() && !in_union; ++k)
+      in_union = dot(x - h.buried[k].first, x - h.buried[k].first) < h.buried[k].second;
+    if (!in_union) return {On::outside, 0, x, kNone};
+    for (const auto& [e, c] : h.circles) {
+      const Vec3 y = x - c.o;
+      const double z = dot(y, c.w);
+      if (std::fabs(z) >= best.distance) continue;
+      const Vec3 perp = y - z * c.w;
+      const double s = std::sqrt(dot(perp, perp));
+      const double dist = std::sqrt((s - c.rho) * (s - c.rho) + z * z);
+      if (dist >= best.distance) continue;
+      const double px = s > 0 ? dot(perp, c.e1) / s : eu_.arc_ends_[eu_.arc_start_[e]].cos_begin;
+      const double py = s > 0 ? dot(perp, c.e2) / s : eu_.arc_ends_[eu_.arc_start_[e]].sin_begin;
+      if (contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], px, py))
+        best = {On::circle, dist, c.o + c.rho * (px * c.e1 + py * c.e2), e};
+    }
+    for (const std::size_t v : h.vertices) {
+      const double dist = norm(x - eu_.vertices_[v].p);
+      if (dist < best.distance) best = {On::vertex, dist, eu_.vertices_[v].p, Index(v)};
+    }
+    return best;
+  }
+
+
+  explicit Integrator(const ErodedUnion& eu)
+      : eu_(eu), t_(eu.balls_->complex().triangulation()), s_(eu.balls_->complex().simplices()), r_(eu.r_),
+        tol_(eu.tolerance_) {}
+
+  // The pieces of edge e's arcs (on circle c) inside `sector`, integrated.
+  // per_ball: also each piece split by power cell (see add_scaled).
+  LayerShare arcs(Index e, const Circle& c, const Arc& sector, std::vector<LayerShare>* per_ball = nullptr) const {
+    LayerShare out;
+    const std::vector<Arc> pieces = clip(edge_arcs(e), sector);
+    const std::vector<Site> sites = per_ball ? sites_near(s_.edge(e)) : std::vector<Site>{};
+    for (const Arc& piece : pieces) {
+      const int parts = int(std::ceil(piece.length / kMaxPiece));
+      for (int k = 0; k < parts; ++k) {
+        const double begin = piece.begin + piece.length * k / parts, end = piece.begin + piece.length * (k + 1) / parts;
+        // The piece's points are within r of the arc, whose ends are a chord
+        // 2 rho sin(length / 4) from its midpoint.
+        const Hood hood = gather(c.o + c.rho * c.radial((begin + end) / 2), 2 * c.rho * std::sin((end - begin) / 4) + r_);
+        bool all_clear;
+        const LayerShare x = arc_piece(hood, c, begin, end, all_clear);
+        if (per_ball) {
+          PieceShares split;
+          const Vec3 mid = c.o + c.rho * c.radial((begin + end) / 2);
+          arc_shares(c, begin, end, all_clear,
+                     near_sites(sites, s_.edge(e), mid, 2 * c.rho * std::sin((end - begin) / 4) + r_ + tol_), split);
+          add_scaled(split, x, s_.edge(e)[0], *per_ball);
+        }
+        out.volume += x.volume;
+        out.area += x.area;
+      }
+    }
+    return out;
+  }
+
+  // The pieces of edge e's arcs in the sector of cell c about it (local
+  // vertices x, y): between the half-planes through its two other vertices,
+  // the short way round.
+  LayerShare cell_arcs(Index c, int x, int y, Index e) const {
+    const auto& v = t_.cell(c).v;
+    const Circle frame = circle_of(t_, s_.edge(e));
+    std::array<double, 2> phi;
+    int n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != x && k != y) phi[n++] = frame.angle(t_.point(v[k]) - frame.o);
+    const double span = wrap(phi[1] - phi[0]);
+    return arcs(e, frame, span <= kPi ? Arc{phi[0], span} : Arc{phi[1], kTwoPi - span});
+  }
+
+  // The whole circle of edge e, split where its ring's half-planes meet it
+  // (the same pieces as the sectors of its cells).
+  LayerShare all_arcs(Index e, std::vector<LayerShare>* per_ball) const {
+    const auto& ev = s_.edge(e);
+    const Circle frame = circle_of(t_, ev);
+    std::vector<double> cuts;
+    for (Index f : s_.edge_triangles(e))
+      for (Index k : s_.triangle(f))
+        if (k != ev[0] && k != ev[1]) cuts.push_back(frame.angle(t_.point(k) - frame.o));
+    std::sort(cuts.begin(), cuts.end());
+    LayerShare out;
+    if (cuts.empty()) return arcs(e, frame, {0, kTwoPi}, per_ball);
+    for (std::size_t k = 0; k < cuts.size(); ++k) {
+      const double next = k + 1 < cuts.size() ? cuts[k + 1] : cuts[0] + kTwoPi;
+      const LayerShare x = arcs(e, frame, {cuts[k], next - cuts[k]}, per_ball);
+      out.volume += x.volume;
+      out.area += x.area;
+    }
+    return out;
+  }
+
+  // The reentrant piece of vertex v (index into vertices_).
+  LayerShare cone(std::size_t v, std::vector<LayerShare>* per_ball = nullptr) const {
+    const Vertex& vx = eu_.vertices_[v];
+    const auto tri = s_.triangle(vx.triangle);
+    std::array<Vec3, 3> dir;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 d = t_.point(tri[k]) - vx.p;
+      dir[k] = (1 / norm(d)) * d;
+    }
+    const SphericalTriangle cone(dir);
+    const Hood hood = gather(vx.p, r_);
+    const auto clear_at_r = [&](double s, double sigma) {
+      return clear(hood, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
+    };
+    std::array<std::array<bool, 8>, 8> at_r;
+    bool all_clear = true;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(node(0, 1, i), node(0, 1, j))) && all_clear;
+    LayerShare out;
+    if (all_clear) {
+      const double omega = solid_angle({}, dir[0], dir[1], dir[2]);
+      out = {omega * r_ * r_ * r_ / 3, omega * r_ * r_};
+    }
+    // Per s, sigma in pieces where the eroded surface is there (tau = r)
+    // or cut off: tau^3 / 3 and r^2 over the solid angle.
+    for (int i = 0; i < 8 && !all_clear; ++i) {
+      const double s = node(0, 1, i);
+      for (const Segment& g : segments(0, 1, at_r[i], [&](double sigma) { return clear_at_r(s, sigma); }))
+        for (int j = 0; j < 8; ++j) {
+          double jac;
+          const Vec3 u = cone.direction(s, node(g.lo, g.hi, j), &jac);
+          const double w = weight(0, 1, i) * weight(g.lo, g.hi, j) * jac;
+          const double tau = g.holds ? r_ : cut(hood, vx.p, u, v);
+          out.volume += w * tau * tau * tau / 3;
+          if (g.holds) out.area += w * r_ * r_;
+        }
+    }
+    if (per_ball) {
+      PieceShares split;
+      cone_shares(v, hood, all_clear, split);
+      add_scaled(split, out, tri[0], *per_ball);
+    }
+    return out;
+  }
+
+  // Per-atom splits (eroded_union_shares.cpp): the parts of pieces in
+  // power cells; see ErodedUnion::layer(per_ball).
+  std::vector<Site> sites_near(std::span<const Index> balls) const;
+  static std::vector<Site> near_sites(std::span<const Site> sites, std::span<const Index> owners, const Vec3& center,
+                                      double radius);
+  static void add_scaled(const PieceShares& s, const LayerShare& total, Index fallback,
+                         std::vector<LayerShare>& per_ball);
+  void arc_shares(const Circle& c, double begin, double end, bool all_clear, std::span<const Site> sites,
+                  PieceShares& out) const;
+  void cone_shares(std::size_t v, const Hood& hood, bool all_clear, PieceShares& out) const;
+  void shell_shares(Index i, std::vector<LayerShare>& per_ball) const;
+
+private:
+  template <class G>
+  void split_ray(std::span<const Site> sites, const Vec3& q, const Vec3& u, double tau, double w, double area, G g,
+                 PieceShares& out) const;
+  template <class Predicate>
+  static std::vector<Segment> node_segments(double a, double b, bool all_clear, Predicate holds);
+  template <class CellAt>
+  static std::vector<Segment> by_cell(const std::vector<Segment>& in, CellAt cell_at, bool other_cells);
+  Index end_cell(std::span<const Site> sites, const Vec3& q, const Vec3& u) const;
+
+  const ErodedUnion& eu_;
+  const Triangulation& t_;
+  const Simplices& s_;
+  double r_, tol_;
+  mutable std::array<Hood, 8> rows_;  // arc_piece's, per node phi (kept: no allocation per piece)
+
+  std::span<const Arc> edge_arcs(Index e) const {
+    return {eu_.arcs_.data() + eu_.arc_start_[e], eu_.arcs_.data() + eu_.arc_start_[e + 1]};
+  }
+
+  // Whether some point of edge e's arcs (circle c) is within `radius` of x.
+  bool near_arcs(Index e, const Circle& c, const Vec3& x, double radius) const {
+    const std::span<const Arc> set = edge_arcs(e);
+    const ArcEnds* ends = eu_.arc_ends_.data() + eu_.arc_start_[e];
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w);
+    const Vec3 perp = y - z * c.w;
+    const double a = dot(perp, c.e1), b = dot(perp, c.e2);
+    const double s = std::sqrt(a * a + b * b);
+    // The circle's point nearest to x, when on an arc (or x on the axis: all are).
+    if (s <= tol_ || contains(set, ends, a, b)) return (s - c.rho) * (s - c.rho) + z * z < radius * radius;
+    // Else an arc's end.
+    for (std::size_t k = 0; k < set.size(); ++k)
+      for (const auto& [cs, sn] : {std::pair{ends[k].cos_begin, ends[k].sin_begin}, {ends[k].cos_end, ends[k].sin_end}}) {
+        const Vec3 d = y - c.rho * (cs * c.e1 + sn * c.e2);
+        if (dot(d, d) < radius * radius) return true;
+      }
+    return false;
+  }
+
+  // Whether clear() can find circle c (of edge e) at a point within
+  // radius - r of x: through a point of its arcs nearer than r to that
+  // point, or, for a circle smaller than r, through its axis.
+  bool circle_near(Index e, const Circle& c, const Vec3& x, double radius) const {
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w), s = norm(y - z * c.w);
+    return (s - c.rho) * (s - c.rho) + z * z < radius * radius && (c.rho < r_ + tol_ || near_arcs(e, c, x, radius));
+  }
+
+  // Whether a point within `reach` of x can be inside ball b.
+  bool ball_near(const Hood::Ball& b, const Vec3& x, double reach) const {
+    return norm(b.c - x) < b.radius + reach + tol_;
+  }
+
+  // What clear() can find or be inside at points within `reach` of `center`.
+  Hood gather(const Vec3& center, double reach) const {
+    const double radius = reach + r_ + tol_;
+    Hood h;
+    // Balls whose sphere is within radius: the ends of the circles.
+    // Buried balls are left out of the pieces (a point inside one is
+    // inside another, up to rounding), kept apart for nearest().
+    std::vector<Index> ids;
+    eu_.ball_grid_.visit(center, radius + eu_.max_radius_, [&](Index k) {
+      if (norm(t_.point(k) - center) >= std::sqrt(t_.weight(k)) + radius) return;
+      if (eu_.balls_->ball_areas()[k] > 0)
+        ids.push_back(k);
+      else if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + reach + tol_)
+        h.buried.emplace_back(t_.point(k), t_.weight(k));
+    });
+    std::sort(ids.begin(), ids.end());
+    for (Index k : ids) {
+      const Hood::Ball b{t_.point(k), std::sqrt(t_.weight(k)), t_.weight(k), k, kNoCover};
+      if (ball_near(b, center, reach)) h.balls.push_back(b);
+    }
+    for (Index k : ids)
+      for (Index e : s_.vertex_edges(k)) {
+        const auto& v = s_.edge(e);
+        if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
+        const Circle c = circle_of(t_, v);
+        if (circle_near(e, c, center, radius)) h.circles.emplace_back(e, c);
+      }
+    eu_.vertex_grid_.visit(center, radius, [&](Index v) {
+      if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
+    });
+    std::sort(h.vertices.begin(), h.vertices.end());
+    return h;
+  }
+
+  // Into `out`, what of h (gathered for a wider reach) clear() can find or
+  // be inside at points within `reach` of x, in h's order.
+  void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const {
+    const double radius = reach + r_ + 2 * tol_;
+    out.balls.clear();
+    out.circles.clear();
+    out.vertices.clear();
+    out.last = {};
+    for (const Hood::Ball& b : h.balls)
+      if (ball_near(b, x, reach)) out.balls.push_back(b);
+    for (const auto& [e, c] : h.circles)
+      if (circle_near(e, c, x, radius)) out.circles.emplace_back(e, c);
+    for (const std::size_t v : h.vertices)
+      if (norm(eu_.vertices_[v].p - x) < radius) out.vertices.push_back(v);
+  }
+
+  // Whether p, a point of sphere k, lies on the union's boundary: in k's
+  // power cell, i.e. in no ball of a neighbour of k.
+  // `cover`: a neighbour to try first, set to the one found covering p
+  // (the same neighbour covers the nearby points a piece tests in turn).
+  bool on_boundary(Index k, const Vec3& p, std::size_t& cover) const {
+    const auto covers = [&](const Cover& m) {
+      const Vec3 d = p - m.c;
+      return dot(d, d) < m.limit;
+    };
+    if (cover != kNoCover && covers(eu_.covers_[cover])) return false;
+    for (std::size_t m = eu_.cover_start_[k]; m < eu_.cover_start_[k + 1]; ++m)
+      if (covers(eu_.covers_[m])) {
+        cover = m;
+        return false;
+      }
+    return true;
+  }
+
+  // Whether direction d from vertex v lies in its normal cone (spanned by
+  // the directions to its triangle's three centers).
+  bool in_cone(std::size_t v, const Vec3& d) const {
+    const Vertex& vx = eu_.vertices_[v];
+    const auto tri = s_.triangle(vx.triangle);
+    const Vec3 a = t_.point(tri[0]) - vx.p, b = t_.point(tri[1]) - vx.p, c = t_.point(tri[2]) - vx.p;
+    const double whole = dot(a, cross(b, c));
+    return dot(d, cross(b, c)) * whole >= 0 && dot(a, cross(d, c)) * whole >= 0 && dot(a, cross(b, d)) * whole >= 0;
+  }
+
+  // Whether the point of ball b's sphere nearest to x is nearer than
+  // `limit` and on the boundary; `inside`: whether x is in b.
+  bool ball_finds(const Hood::Ball& b, const Vec3& x, double limit, bool& inside) const {
+    const Vec3 d = x - b.c;
+    const double dd = dot(d, d);
+    inside = !(dd >= b.radius_sq);
+    if (!inside) return false;
+    const double deep = b.radius - limit;  // x is nearer than limit to the sphere beyond this
+    if ((deep > 0 && dd <= deep * deep) || dd == 0) return false;
+    return on_boundary(b.id, b.c + (b.radius / std::sqrt(dd)) * d, b.cover);
+  }
+
+  // Whether a point of circle c's arcs (edge e) is nearer to x than `limit`.
+  bool circle_finds(Index e, const Circle& c, const Vec3& x, double limit, double limit_sq) const {
+    const Vec3 y = x - c.o;
+    const double z = dot(y, c.w);
+    if (std::fabs(z) >= limit) return false;
+    const Vec3 perp = y - z * c.w;
+    const double s = std::sqrt(dot(perp, perp));
+    if ((s - c.rho) * (s - c.rho) + z * z >= limit_sq) return false;
+    // On the axis: all its points equally near.
+    return s <= tol_ || contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], dot(perp, c.e1), dot(perp, c.e2));
+  }
+
+  // Whether what `n` names in h is a point of F nearer to x than `limit`
+  // (then clear() answers false: it finds n or an earlier one, or x is
+  // outside the union).
+  bool finds(const Hood& h, const Nearer& n, const Vec3& x, double limit, double limit_sq) const {
+    bool inside;
+    switch (n.kind) {
+      case Nearer::kBall: return ball_finds(h.balls[n.which], x, limit, inside);
+      case Nearer::kCircle: return circle_finds(h.circles[n.which].first, h.circles[n.which].second, x, limit, limit_sq);
+      case Nearer::kVertex: {
+        const Vec3 d = x - eu_.vertices_[h.vertices[n.which]].p;
+        return dot(d, d) < limit_sq;
+      }
+      case Nearer::kNone: break;
+    }
+    return false;
+  }
+
+  // Whether no point of F (outside the union) is nearer to x than t, up to
+  // the tolerance; if one is, `nearer` tells which. `self`: the vertex
+  // whose piece x is tested for (or vertices_.size()), which keeps
+  // directions shared with a coincident vertex of smaller index out.
+  // Without `nearer` only the answer counts: the point h found last is
+  // tried first (nearby tests are mostly cut off by the same point).
+  bool clear(const Hood& h, const Vec3& x, double t, std::size_t self, Nearer* nearer = nullptr) const {
+    const double limit = t - tol_;
+    if (limit <= 0) return true;
+    const double limit_sq = limit * limit;
+    if (!nearer && finds(h, h.last, x, limit, limit_sq)) return false;
+    const auto found = [&](Nearer::Kind kind, std::size_t which) {
+      if (nearer) *nearer = {kind, which};
+      if (kind != Nearer::kNone) h.last = {kind, which};
+      return false;
+    };
+    bool in_union = false;
+    for (std::size_t k = 0; k < h.balls.size(); ++k) {
+      bool inside;
+      if (ball_finds(h.balls[k], x, limit, inside)) return found(Nearer::kBall, k);
+      in_union = in_union || inside;
+    }
+    if (!in_union) return found(Nearer::kNone, 0);
+    for (std::size_t k = 0; k < h.circles.size(); ++k)
+      if (circle_finds(h.circles[k].first, h.circles[k].second, x, limit, limit_sq)) return found(Nearer::kCircle, k);
+    const bool is_vertex = self < eu_.vertices_.size();
+    for (std::size_t k = 0; k < h.vertices.size(); ++k) {
+      const std::size_t v = h.vertices[k];
+      const Vec3 d = x - eu_.vertices_[v].p;
+      if (dot(d, d) < limit_sq) return found(Nearer::kVertex, k);
+      if (is_vertex && v < self && norm(d) < t + tol_ && norm(eu_.vertices_[v].p - eu_.vertices_[self].p) <= tol_ &&
+          in_cone(v, d))
+        return found(Nearer::kNone, 0);
+    }
+    return true;
+  }
+
+  // Where the ray q + t u meets the bisector of q and the point of F found
+  // nearer (its distance to q + t u equals t, for a circle's point up to
+  // kCutPrecision), if
+  // in (0, hi): the ray's cut when that point stays the nearer one.
+  double crossing(const Hood& h, const Nearer& nearer, const Vec3& q, const Vec3& u, double hi) const {
+    double t = -1;
+    if (nearer.kind == Nearer::kBall) {  // |q + t u - c| = R - t
+      const Hood::Ball& b = h.balls[nearer.which];
+      const double den = 2 * (dot(u, b.c - q) - b.radius);
+      if (den > 0) t = (dot(q - b.c, q - b.c) - b.radius_sq) / den;
+    } else if (nearer.kind == Nearer::kVertex) {  // |q + t u - p| = t
+      const Vec3 p = eu_.vertices_[h.vertices[nearer.which]].p;
+      const double den = 2 * dot(u, p - q);
+      if (den > 0) t = dot(q - p, q - p) / den;
+    } else if (nearer.kind == Nearer::kCircle) {  // distance to the circle - t decreases along the ray
+      const Circle& c = h.circles[nearer.which].second;
+      double lo = 0;
+      t = hi;
+      while (t - lo > kCutPrecision * r_) {
+        const double mid = (lo + t) / 2;
+        const Vec3 y = q + mid * u - c.o;
+        const double z = dot(y, c.w), s = norm(y - z * c.w);
+        ((s - c.rho) * (s - c.rho) + z * z >= mid * mid ? lo : t) = mid;
+      }
+    }
+    return t < hi ? t : -1;
+  }
+
+  // The cut distance tau(q, u), at most r: where the nearer point found
+  // says, when the test confirms it (clear there, not just beyond), else by
+  // bisection on the test.
+  double cut(const Hood& h, const Vec3& q, const Vec3& u, std::size_t self) const {
+    Nearer nearer;
+    if (clear(h, q + r_ * u, r_, self, &nearer)) return r_;
+    double lo = 0, hi = r_;
+    // Below a thousand tolerances the test's answers are rounding noise.
+    for (int tries = 0; tries < 4; ++tries) {
+      const double t = crossing(h, nearer, q, u, hi);
+      if (t <= std::max(lo, 1e3 * tol_)) break;
+      if (!clear(h, q + t * u, t, self, &nearer)) {
+        hi = t;  // cut before: try the point found there
+        continue;
+      }
+      lo = t;
+      const double beyond = std::min(hi, t + kCutPrecision * r_);
+      if (!clear(h, q + beyond * u, beyond, self)) return t;
+      break;
+    }
+    while (hi - lo > kCutPrecision * r_) {
+      const double mid = (lo + hi) / 2;
+      (clear(h, q + mid * u, mid, self) ? lo : hi) = mid;
+    }
+    return lo;
+  }
+
+  // The toroidal piece of circle c for phi in [begin, end].
+  // all_clear: whether every node saw the eroded surface (closed forms).
+  LayerShare arc_piece(const Hood& h, const Circle& c, double begin, double end, bool& all_clear) const {
+    const double psi_i = std::atan2(c.z_i, c.rho), psi_j = std::atan2(c.z_j, c.rho);
+    const std::size_t none = eu_.vertices_.size();
+    // Each node phi's points are within r of its circle point q: tested
+    // against the part of the hood near q.
+    const auto clear_at_r = [&](int i, const Vec3& radial, double psi) {
+      return clear(rows_[i], c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
+    };
+    std::array<std::array<bool, 8>, 8> at_r;
+    all_clear = true;
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 radial = c.radial(node(begin, end, i));
+      narrow(h, c.o + c.rho * radial, r_, rows_[i]);
+      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(i, radial, node(psi_i, psi_j, j))) && all_clear;
+    }
+    if (all_clear)
+      return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
+    // Per phi, psi in pieces where the eroded surface is there (closed
+    // forms) or cut off (the rays' volumes up to tau).
+    LayerShare out;
+    for (int i = 0; i < 8; ++i) {
+      const double w = weight(begin, end, i);
+      const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
+      for (const Segment& g : segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(i, radial, psi); })) {
+        if (g.holds) {
+          out.volume += w * wedge_volume(c.rho, r_, g.lo, g.hi);
+          out.area += w * wedge_area(c.rho, r_, g.lo, g.hi);
+          continue;
+        }
+        for (int j = 0; j < 8; ++j) {
+          const double psi = node(g.lo, g.hi, j);
+          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, std::cos(psi), cut(rows_[i], q, c.ray(radial, psi), none));
+        }
+      }
+    }
+    return out;
+  }
+};
+
+}  // namespace alpha
