@@ -5,8 +5,10 @@
 // of its atom balls, radius = ProtOr radius + probe, measured analytically
 // over the weighted alpha complex at alpha_sq = 0 (alpha::UnionOfBalls), so
 // there is no resolution to choose (unlike Lee-Richards slices or
-// Shrake-Rupley points). With --per-atom, the SAS area of every atom. A
-// point file with --weighted gives the union of its balls.
+// Shrake-Rupley points). With --per-atom, the SAS area and volume of every
+// atom (its power cell's share), and the solvent-excluded ones (the MS
+// surface's area and the volume it encloses inside the atom's power cell).
+// A point file with --weighted gives the union of its balls.
 //
 // For a structure, also the solvent-excluded (molecular, Connolly) surface:
 // the SAS union eroded by the probe (alpha::ErodedUnion); null for a point
@@ -56,7 +58,9 @@ Measured measure(const SurfaceOptions& opt) {
     molecule::StructureOptions selection = in.structure;
     selection.min_atoms = 1;  // one atom has a surface
     m.atoms = read_structure_file(in.file, selection).atoms;
-    m.surface = naming_file(in.file, [&] { return molecule::measure_surface(*m.atoms, {in.probe, !opt.sa_only}); });
+    m.surface = naming_file(in.file, [&] {
+      return molecule::measure_surface(*m.atoms, {in.probe, !opt.sa_only, opt.per_atom});
+    });
   } else {
     if (!in.weighted) {
       alpha::read_input_file(in.file);  // a missing file or a directory is the first thing to say
@@ -73,7 +77,7 @@ Measured measure(const SurfaceOptions& opt) {
   return m;
 }
 
-nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
+nlohmann::ordered_json atom_json(const molecule::Atom& a) {
   nlohmann::ordered_json j;
   j["serial"] = a.serial;
   j["name"] = a.name;
@@ -81,7 +85,6 @@ nlohmann::ordered_json atom_json(const molecule::Atom& a, double area) {
   j["seq_num"] = a.seq_num;
   j["icode"] = molecule::icode_text(a.icode);
   j["chain"] = a.chain;
-  j["area"] = area;
   return j;
 }
 
@@ -91,6 +94,7 @@ int run_surface(const SurfaceOptions& opt) {
   const std::size_t n = u.balls;
   const std::vector<double>& areas = u.ball_areas;
   const bool structure = m.atoms.has_value();
+  const bool excluded = !u.ms_ball_areas.empty();
   const auto excluded_json = [](const std::optional<double>& measure) {
     return measure ? nlohmann::ordered_json(*measure) : nlohmann::ordered_json(nullptr);
   };
@@ -107,14 +111,18 @@ int run_surface(const SurfaceOptions& opt) {
     if (opt.per_atom) {
       j["per_atom"] = nlohmann::ordered_json::array();
       for (std::size_t i = 0; i < n; ++i) {
-        if (structure) {
-          j["per_atom"].push_back(atom_json((*m.atoms)[i], areas[i]));
-        } else {
-          nlohmann::ordered_json p;
+        nlohmann::ordered_json p;
+        if (structure)
+          p = atom_json((*m.atoms)[i]);
+        else
           p["index"] = i;
-          p["area"] = areas[i];
-          j["per_atom"].push_back(p);
+        p["area"] = areas[i];
+        p["volume"] = u.ball_volumes[i];
+        if (excluded) {
+          p["ms_area"] = u.ms_ball_areas[i];
+          p["ms_volume"] = u.ms_ball_volumes[i];
         }
+        j["per_atom"].push_back(p);
       }
     }
     std::printf("%s\n", j.dump().c_str());
@@ -132,16 +140,20 @@ int run_surface(const SurfaceOptions& opt) {
                                     *u.ms_area, *u.ms_volume)
                             .c_str());
     if (opt.per_atom) {
-      std::printf("%s", structure ? "serial name residue seq_num chain area\n" : "index area\n");
+      std::printf("%s%s\n", structure ? "serial name residue seq_num chain area volume" : "index area volume",
+                  excluded ? " ms_area ms_volume" : "");
       for (std::size_t i = 0; i < n; ++i) {
+        std::string line;
         if (structure) {
           const molecule::Atom& a = (*m.atoms)[i];
-          std::printf("%s", fmt::format("{} {} {} {}{} {} {:.3f}\n", a.serial, a.name, a.residue_name, a.seq_num,
-                                        molecule::icode_text(a.icode), a.chain, areas[i])
-                                .c_str());
+          line = fmt::format("{} {} {} {}{} {}", a.serial, a.name, a.residue_name, a.seq_num,
+                             molecule::icode_text(a.icode), a.chain);
         } else {
-          std::printf("%s", fmt::format("{} {:.3f}\n", i, areas[i]).c_str());
+          line = fmt::format("{}", i);
         }
+        line += fmt::format(" {:.3f} {:.3f}", areas[i], u.ball_volumes[i]);
+        if (excluded) line += fmt::format(" {:.3f} {:.3f}", u.ms_ball_areas[i], u.ms_ball_volumes[i]);
+        std::printf("%s\n", line.c_str());
       }
     }
   }
@@ -157,10 +169,12 @@ Subcommand add_surface_command(CLI::App& app) {
       "surface",
       "Solvent-accessible (SAS) and solvent-excluded (molecular) surface area and volume of a structure: the union "
       "of its atom balls (ProtOr radius + probe) and that union eroded by the probe, from the weighted alpha "
-      "complex; SAS area per atom with --per-atom");
+      "complex; per atom (its power cell's share) with --per-atom");
   add_input_options(*sub, opt->input);
   sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
-  sub->add_flag("--per-atom", opt->per_atom, "Also print the SAS area of every atom (ball)");
+  sub->add_flag("--per-atom", opt->per_atom,
+                "Also print every atom's (ball's) SAS area and volume and its solvent-excluded area and volume, "
+                "split by power cell (the excluded ones take about twice the excluded time)");
   sub->add_flag("--sa-only", opt->sa_only,
                 "Skip the solvent-excluded (molecular) surface, which takes several times as long as the SAS: "
                 "ms_volume and ms_area are null");

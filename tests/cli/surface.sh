@@ -62,13 +62,29 @@ case $case_name in
     [[ $(rounded "$sum" 3) == $(rounded "$(json_value sa_area)" 3) ]] || fail "per-atom areas sum to $sum"
     # Buried atoms have area 0 exactly, never a negative rounding residue.
     grep -q '"area":-' "$tmp/out" && fail "a negative per-atom area"
-    [[ $(grep -o '"area":0.0}' "$tmp/out" | wc -l) -gt 1000 ]] || fail "buried atoms should have area 0.0"
+    [[ $(grep -o '"area":0.0,' "$tmp/out" | wc -l) -gt 1000 ]] || fail "buried atoms should have area 0.0"
+    # SA volumes and the molecular surface's area and volume per power cell
+    # sum to their totals too.
+    for key in volume:sa_volume ms_area:ms_area ms_volume:ms_volume; do
+      sum=$(grep -o '"per_atom":.*' "$tmp/out" | grep -o "\"${key%%:*}\":[^,}]*" | cut -d: -f2 |
+        awk '{ s += $1 } END { printf "%.6f", s }')
+      [[ $(rounded "$sum" 3) == $(rounded "$(json_value "${key#*:}")" 3) ]] || fail "per-atom ${key%%:*} sum to $sum"
+    done
+    [[ $(grep -o '"ms_volume":' "$tmp/out" | wc -l) -eq 2770 ]] || fail "expected an ms_volume per atom"
+    ;;
+  per_atom_sa_only)
+    # --sa-only: no molecular surface, per atom neither.
+    run -q surface "$pdb" --json --per-atom --sa-only
+    expect_json_object
+    grep -q '"ms_area":[0-9]' "$tmp/out" && fail "per-atom ms_area with --sa-only"
+    grep -q '"chain":"A","area":0.110585[0-9]*,"volume":[0-9.]*}' "$tmp/out" || fail "first atom entry"
     ;;
   per_atom_text)
     run -q surface "$pdb" --per-atom
     expect_success
-    [[ $(grep -c '^[0-9]* [^ ]* [A-Z]* [0-9A-Z]* A [0-9.]*$' "$tmp/out") -eq 2769 ]] || fail "expected 2769 atom lines"
-    grep -q '^serial name residue seq_num chain area$' "$tmp/out" || fail "no table header"
+    [[ $(grep -c '^[0-9]* [^ ]* [A-Z]* [0-9A-Z]* A [0-9.]* [0-9.]* [0-9.-]* [0-9.-]*$' "$tmp/out") -eq 2769 ]] ||
+      fail "expected 2769 atom lines"
+    grep -q '^serial name residue seq_num chain area volume ms_area ms_volume$' "$tmp/out" || fail "no table header"
     ;;
   probe)
     # The van der Waals surface (probe 0); with probe 0.001 FreeSASA (2000
