@@ -182,6 +182,9 @@ py::dict surface_dict(const molecule::Surface& s) {
   d["ms_volume"] = s.ms_volume ? py::cast(*s.ms_volume) : py::none();
   d["atom_areas"] = array_of(s.ball_areas);
   d["atom_volumes"] = array_of(s.ball_volumes);
+  const bool per_atom = !s.ms_ball_areas.empty();
+  d["ms_atom_areas"] = per_atom ? py::object(array_of(s.ms_ball_areas)) : py::object(py::none());
+  d["ms_atom_volumes"] = per_atom ? py::object(array_of(s.ms_ball_volumes)) : py::object(py::none());
   return d;
 }
 
@@ -325,32 +328,33 @@ PYBIND11_MODULE(_core, m) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_arrays(name, xyz, radii, names, options));
   });
 
-  m.def("surface_path", [](const std::string& path, double probe, bool excluded, const py::dict& selection) {
-    const molecule::StructureOptions so = surface_selection(selection);
-    molecule::Surface s;
-    {
-      py::gil_scoped_release release;
-      s = molecule::surface_of_file(path, so, {probe, excluded});
-    }
-    return surface_dict(s);
-  });
-  m.def("surface_text", [](const std::string& name, const std::string& text, double probe, bool excluded,
+  m.def("surface_path", [](const std::string& path, double probe, bool excluded, bool per_atom,
                            const py::dict& selection) {
     const molecule::StructureOptions so = surface_selection(selection);
     molecule::Surface s;
     {
       py::gil_scoped_release release;
-      s = molecule::surface_of_content(name, text, so, {probe, excluded});
+      s = molecule::surface_of_file(path, so, {probe, excluded, per_atom});
+    }
+    return surface_dict(s);
+  });
+  m.def("surface_text", [](const std::string& name, const std::string& text, double probe, bool excluded,
+                           bool per_atom, const py::dict& selection) {
+    const molecule::StructureOptions so = surface_selection(selection);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::surface_of_content(name, text, so, {probe, excluded, per_atom});
     }
     return surface_dict(s);
   });
   m.def("surface_arrays", [](const Points& xyz, const std::optional<Points>& radii, const py::dict& names,
-                             double probe, bool excluded) {
+                             double probe, bool excluded, bool per_atom) {
     const molecule::Structure st = structure_of(xyz, radii, names);
     molecule::Surface s;
     {
       py::gil_scoped_release release;
-      s = molecule::measure_surface(st.atoms, {probe, excluded});
+      s = molecule::measure_surface(st.atoms, {probe, excluded, per_atom});
     }
     return surface_dict(s);
   });
