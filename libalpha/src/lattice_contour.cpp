@@ -56,8 +56,9 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
   const auto& size = lattice.size;
   if (inside.size() != lattice.num_nodes()) fail("contour: one flag per lattice node expected");
   for (std::size_t n = 0; n < inside.size(); ++n) {
+    if (!inside[n]) continue;
     const std::size_t i = n % size[0], j = n / size[0] % size[1], k = n / (size[0] * size[1]);
-    if (inside[n] && (i == 0 || j == 0 || k == 0 || i + 1 == size[0] || j + 1 == size[1] || k + 1 == size[2]))
+    if (i == 0 || j == 0 || k == 0 || i + 1 == size[0] || j + 1 == size[1] || k + 1 == size[2])
       fail("contour: a node on the lattice's border is inside");
   }
   static const std::array<Tet, 6> kTets = cube_tetrahedra();
@@ -75,7 +76,14 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
     if (added) mesh.points.push_back(vertex(a, b));
     return it->second;
   };
+  const std::size_t dj = size[0], dk = size[0] * size[1];
   const auto cube = [&](std::size_t i, std::size_t j, std::size_t k) {
+    // Most cubes have all corners alike (no surface): told by 8 reads.
+    const std::size_t o = lattice.index(i, j, k);
+    const std::uint8_t first = inside[o];
+    if (inside[o + 1] == first && inside[o + dj] == first && inside[o + dj + 1] == first && inside[o + dk] == first &&
+        inside[o + dk + 1] == first && inside[o + dk + dj] == first && inside[o + dk + dj + 1] == first)
+      return;
     for (const Tet& t : kTets) {
       std::array<std::size_t, 4> node;
       int mask = 0, count = 0;
