@@ -14,29 +14,26 @@
 #include "compensated_sum.hpp"
 
 namespace alpha {
-namespace {
+namespace eroded_union_detail {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2 * kPi;
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2 * kPi;
 // 8-node Gauss-Legendre rule on [-1, 1], nodes ascending.
-constexpr std::array<double, 8> kNode{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+inline constexpr std::array<double, 8> kNode{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
                                       -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
                                       0.7966664774136267,  0.9602898564975363};
-constexpr std::array<double, 8> kWeight{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+inline constexpr std::array<double, 8> kWeight{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
                                         0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
                                         0.2223810344533745, 0.1012285362903763};
-constexpr double kCutPrecision = 1e-8;  // of tau, relative to r
-constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between two nodes
-constexpr double kMaxPiece = kPi / 4;
+inline constexpr double kCutPrecision = 1e-8;  // of tau, relative to r
+inline constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between two nodes
+inline constexpr double kMaxPiece = kPi / 4;
 
-double wrap(double a) {
+inline double wrap(double a) {
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
 }
 
-}  // namespace
-
-namespace eroded_union_detail {
 
 using Arc = ErodedUnion::Arc;
 
@@ -118,25 +115,17 @@ struct SphericalTriangle {
   }
 };
 
-}  // namespace eroded_union_detail
-
-using namespace eroded_union_detail;
-
-namespace {
-
-
-using Arc = ErodedUnion::Arc;
 using Nearest = ErodedUnion::Nearest;
 
 
 // Node k of the Gauss rule on [a, b], and its weight.
-double node(double a, double b, int k) { return (a + b) / 2 + (b - a) / 2 * kNode[k]; }
-double weight(double a, double b, int k) { return (b - a) / 2 * kWeight[k]; }
+inline double node(double a, double b, int k) { return (a + b) / 2 + (b - a) / 2 * kNode[k]; }
+inline double weight(double a, double b, int k) { return (b - a) / 2 * kWeight[k]; }
 
-bool full(const Arc& a) { return a.length >= kTwoPi; }
+inline bool full(const Arc& a) { return a.length >= kTwoPi; }
 
 // The parts of `set` inside `a`.
-std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
+inline std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
   if (full(a)) return {set.begin(), set.end()};
   std::vector<Arc> out;
   for (const Arc& x : set) {
@@ -154,7 +143,7 @@ std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
 }
 
 // The parts of `set` where a cos phi + b sin phi <= c.
-std::vector<Arc> where_below(const std::vector<Arc>& set, double a, double b, double c) {
+inline std::vector<Arc> where_below(const std::vector<Arc>& set, double a, double b, double c) {
   const double m = std::hypot(a, b);
   if (c >= m) return set;
   if (c <= -m) return {};
@@ -166,7 +155,7 @@ std::vector<Arc> where_below(const std::vector<Arc>& set, double a, double b, do
 
 // Whether the direction (x, y) in a circle's frame is on one of its arcs
 // (ends: the arcs' end directions), by the signs of cross products.
-bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double x, double y) {
+inline bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double x, double y) {
   for (std::size_t k = 0; k < set.size(); ++k) {
     if (full(set[k])) return true;
     const double after_begin = ends[k].cos_begin * y - ends[k].sin_begin * x;
@@ -178,7 +167,7 @@ bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, double
 
 
 // A frame about the unit axis w (only w, e1, e2 set).
-Circle circle_of_axis(const Vec3& w) {
+inline Circle circle_of_axis(const Vec3& w) {
   Circle c;
   c.w = w;
   // e1: w crossed with the coordinate axis it is least aligned with.
@@ -190,7 +179,7 @@ Circle circle_of_axis(const Vec3& w) {
   return c;
 }
 
-Circle circle_of(const Triangulation& t, const std::array<Index, 2>& edge) {
+inline Circle circle_of(const Triangulation& t, const std::array<Index, 2>& edge) {
   const Vec3 &pi = t.point(edge[0]), &pj = t.point(edge[1]);
   const double wi = t.weight(edge[0]), wj = t.weight(edge[1]);
   Circle c;
@@ -209,7 +198,7 @@ Circle circle_of(const Triangulation& t, const std::array<Index, 2>& edge) {
 }
 
 // int_0^T |rho - t c| t dt, c = cos psi > 0.
-double ray_volume(double rho, double c, double T) {
+inline double ray_volume(double rho, double c, double T) {
   const auto f = [&](double t) { return rho * t * t / 2 - c * t * t * t / 3; };
   if (c * T <= rho) return f(T);
   const double t0 = rho / c;  // the ray crosses the circle's axis
@@ -231,7 +220,7 @@ double over_wedge(double rho, double r, double a, double b, Smooth smooth) {
 }
 
 // int_a^b |rho - r cos psi| r dpsi.
-double wedge_area(double rho, double r, double a, double b) {
+inline double wedge_area(double rho, double r, double a, double b) {
   return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
     const double x = r * (rho * (hi - lo) - r * (std::sin(hi) - std::sin(lo)));
     return crossing ? -x : x;
@@ -239,7 +228,7 @@ double wedge_area(double rho, double r, double a, double b) {
 }
 
 // int_a^b ray_volume(rho, cos psi, r) dpsi.
-double wedge_volume(double rho, double r, double a, double b) {
+inline double wedge_volume(double rho, double r, double a, double b) {
   return over_wedge(rho, r, a, b, [&](double lo, double hi, bool crossing) {
     const double x = rho * r * r / 2 * (hi - lo) - r * r * r / 3 * (std::sin(hi) - std::sin(lo));
     // Past the axis: rho^3 / (3 cos^2 psi) - x's integrand, by 2 f(t0) - f(r).
@@ -282,10 +271,11 @@ struct LayerSum {
   LayerShare value() const { return {volume.value(), area.value()}; }
 };
 
-constexpr std::size_t kNoCover = std::size_t(-1);
+inline constexpr std::size_t kNoCover = std::size_t(-1);
 
+}  // namespace eroded_union_detail
 
-}  // namespace
+using namespace eroded_union_detail;
 
 // What can be within reach of a point (2r of a piece): balls whose sphere
 // comes near, the circles of edges of K between them, boundary vertices.
