@@ -6,7 +6,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -68,6 +70,41 @@ TEST_CASE("PointGrid visits a superset of the points within the radius, each onc
   CHECK(g.covers_all({0, 0, 0}, std::numeric_limits<double>::infinity()));
   CHECK(visited(g, {0, 0, 0}, std::numeric_limits<double>::infinity()).size() == pts.size());
   CHECK_FALSE(g.covers_all({5, 5, 5}, 100.0));  // the outliers lie beyond
+}
+
+TEST_CASE("PointGrid visits exactly the points of the cells meeting the cube, in key order", "[point_grid]") {
+  // Compact points (cells found by index) and the same with a far outlier
+  // (too many empty cells for an index: found by binary search) must visit
+  // alike: the cells' points ordered by cell (x, then y, then z), then id.
+  const double spacing = 1.7;
+  const std::vector<Vec3> compact = testing::random_points(2000, 33, 30.0);
+  std::vector<Vec3> sparse = compact;
+  sparse.push_back({1e9, 0, 0});
+  const auto cell = [&](double v) { return std::int64_t(std::floor(v / spacing)); };
+  std::mt19937_64 rng(34);
+  std::uniform_real_distribution<double> coord(-3, 33), radius(0, 6);
+  for (const std::vector<Vec3>* pts : {&compact, static_cast<const std::vector<Vec3>*>(&sparse)}) {
+    alpha::PointGrid g(spacing);
+    for (Index i = 0; i < Index(pts->size()); ++i) g.add((*pts)[i], i);
+    g.finish();
+    for (int k = 0; k < 100; ++k) {
+      const Vec3 c{coord(rng), coord(rng), coord(rng)};
+      const double r = radius(rng);
+      std::vector<std::pair<std::array<std::int64_t, 3>, Index>> expected;
+      for (Index i = 0; i < Index(compact.size()); ++i) {
+        const Vec3& p = compact[i];
+        const std::array<std::int64_t, 3> key{cell(p.x), cell(p.y), cell(p.z)};
+        if (key[0] >= cell(c.x - r) && key[0] <= cell(c.x + r) && key[1] >= cell(c.y - r) && key[1] <= cell(c.y + r) &&
+            key[2] >= cell(c.z - r) && key[2] <= cell(c.z + r))
+          expected.emplace_back(key, i);
+      }
+      std::sort(expected.begin(), expected.end());
+      std::vector<Index> ids;
+      for (const auto& e : expected) ids.push_back(e.second);
+      INFO("points " << pts->size() << ", centre " << c.x << " " << c.y << " " << c.z << ", radius " << r);
+      CHECK(visited(g, c, r) == ids);
+    }
+  }
 }
 
 TEST_CASE("PointGrid: NaN, infinite and far queries; sparse points far apart", "[point_grid]") {

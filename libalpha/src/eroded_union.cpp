@@ -119,7 +119,10 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
   }
   vertex_start_[s.num_triangles()] = vertices_.size();
 
-  ball_grid_ = PointGrid(2 * max_radius_ + 2 * r + tolerance_);
+  // Cells of the largest radius: a gather's cube (its radius plus that
+  // radius) spans about four a side, which visits a third of the balls that
+  // cells of the cube's size would.
+  ball_grid_ = PointGrid(max_radius_ + tolerance_);
   for (Index i = 0; i < n; ++i)
     if (balls.in_dual_complex_vertex(i)) ball_grid_.add(t.point(i), i);
   ball_grid_.finish();

@@ -23,6 +23,17 @@ public:
     std::sort(entries_.begin(), entries_.end());
     for (const auto& e : entries_)
       for (int a = 0; a < 3; ++a) low_[a] = std::min(low_[a], e.first[a]), high_[a] = std::max(high_[a], e.first[a]);
+    // Each occupied range's cell's first entry, when the range has not
+    // many more cells than points (a query then finds a cell by index, not
+    // by binary search); sorted keys run in cell-index order.
+    start_.clear();
+    if (entries_.empty()) return;
+    double cells = 1;
+    for (int a = 0; a < 3; ++a) cells *= double(high_[a]) - double(low_[a]) + 1;
+    if (cells > 8 * double(entries_.size()) + 4096) return;
+    start_.assign(std::size_t(cells) + 1, Index(0));
+    for (const auto& e : entries_) ++start_[cell_index(e.first) + 1];
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
   }
 
   // Calls f(id) for every point in the grid cells that meet the cube of
@@ -40,6 +51,16 @@ public:
     if (cells > double(entries_.size())) {
       for (const auto& [k, id] : entries_)
         if (lo[0] <= k[0] && k[0] <= hi[0] && lo[1] <= k[1] && k[1] <= hi[1] && lo[2] <= k[2] && k[2] <= hi[2]) f(id);
+      return;
+    }
+    if (!start_.empty()) {
+      for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+          // The row's cells lo[2]..hi[2] hold consecutive entries.
+          const std::size_t row = row_index(x, y);
+          const Index end = start_[row + std::size_t(hi[2] - low_[2]) + 1];
+          for (Index e = start_[row + std::size_t(lo[2] - low_[2])]; e < end; ++e) f(entries_[e].second);
+        }
       return;
     }
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
@@ -78,9 +99,16 @@ private:
     const double f = std::floor(v);
     return f >= double(kFar) ? kFar : f > -double(kFar) ? std::int64_t(f) : -kFar;  // NaN: -kFar, defined
   }
+  // Of a cell in the occupied range, x major (the keys' order).
+  std::size_t row_index(std::int64_t x, std::int64_t y) const {
+    const std::size_t ny = std::size_t(high_[1] - low_[1] + 1), nz = std::size_t(high_[2] - low_[2] + 1);
+    return (std::size_t(x - low_[0]) * ny + std::size_t(y - low_[1])) * nz;
+  }
+  std::size_t cell_index(const Key& k) const { return row_index(k[0], k[1]) + std::size_t(k[2] - low_[2]); }
   Key key(const Vec3& p) const { return {cell(p.x / spacing_), cell(p.y / spacing_), cell(p.z / spacing_)}; }
   double spacing_;
   std::vector<std::pair<Key, Index>> entries_;
+  std::vector<Index> start_;  // per cell of the occupied range, or empty
   Key low_{kFar, kFar, kFar}, high_{-kFar, -kFar, -kFar};  // occupied cells' range
 };
 
