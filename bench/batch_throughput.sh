@@ -21,9 +21,10 @@
 #     Ours also with -j 1, which is the memory of one worker.
 #   - failures: ours from failures.tsv; fpocket returns 0 even when a file
 #     fails, so its failures are the inputs without an _info.txt.
-#   - scaling: `alphapocket pockets` on 1a26A and on the 54-copy assembly:
-#     seconds (user + system CPU, single-threaded) and peak memory, and the
-#     ratios against the 54x of a linear cost.
+#   - scaling: `alphapocket batch -j 1` (the batch defaults: the pocket
+#     search and the report, no meshes) on 1a26A and on the 54-copy
+#     assembly: seconds (user + system CPU, single-threaded) and peak
+#     memory, and the ratios against the 54x of a linear cost.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -151,11 +152,11 @@ for k, site in enumerate(np.ndindex(3, 3, 6)):
 out.setup_entities()
 out.make_mmcif_document().write_file(sys.argv[2])
 EOF
-cpu_timed() {  # FILE: "CPU_SECONDS MAX_RSS_KB ATOMS" of alphapocket pockets
+cpu_timed() {  # FILE: "CPU_SECONDS MAX_RSS_KB ATOMS" of alphapocket batch -j 1 (the batch defaults)
   rm -rf "$scratch/scale"
-  /usr/bin/time -f '%U %S %M' -o "$scratch/time" "$exe" -q pockets "$1" -o "$scratch/scale" >/dev/null
+  /usr/bin/time -f '%U %S %M' -o "$scratch/time" "$exe" -q batch "$1" -o "$scratch/scale" -j 1 >/dev/null
   read -r u s m <"$scratch/time"
-  echo "$(bc -l <<<"$u + $s") $m $(grep -o '"atoms_kept": *[0-9]*' "$scratch/scale/report.json" | grep -o '[0-9]*$')"
+  echo "$(bc -l <<<"$u + $s") $m $(awk -F, 'NR == 2 { print $6 }' "$scratch/scale/structures.csv")"
 }
 read -r s1 r1 a1 <<<"$(cpu_timed "$root/examples/data/1a26A.pdb")"
 read -r s54 r54 a54 <<<"$(cpu_timed "$scratch/copies54.cif")"
