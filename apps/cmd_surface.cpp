@@ -174,7 +174,7 @@ Subcommand add_surface_command(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
   sub->add_flag("--per-atom", opt->per_atom,
                 "Also print every atom's (ball's) SAS area and volume and its solvent-excluded area and volume, "
-                "split by power cell (the excluded ones take about twice the excluded time)");
+                "split by power cell (about 3 times as long as without it)");
   sub->add_flag("--sa-only", opt->sa_only,
                 "Skip the solvent-excluded (molecular) surface, which takes several times as long as the SAS: "
                 "ms_volume and ms_area are null");
