@@ -3,7 +3,8 @@
 // consistently oriented 2-manifolds without crossing triangles (exact
 // test), whose area and volume approach ErodedUnion's analytic ones, on
 // degenerate inputs (one ball, touching balls, coplanar centres) and on
-// real proteins.
+// real proteins; and the casts of real proteins' cavities
+// (alpha::cells_mesh), whose volumes approach their ms_volume.
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -16,6 +17,8 @@
 #include "alpha/eroded_union_mesh.hpp"
 #include "ball_union.hpp"
 #include "molecule/atom_balls.hpp"
+#include "molecule/pocket_meshes.hpp"
+#include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "surface_mesh_checks.hpp"
 
@@ -99,4 +102,34 @@ TEST_CASE("surface mesh: real proteins within 1% of the analytic molecular volum
     CHECK(m.mesh.volume == Approx(m.volume).epsilon(0.01));
     CHECK(m.mesh.area == Approx(m.area).epsilon(0.01));
   }
+}
+
+TEST_CASE("cast mesh: real proteins' casts are closed, voids and site-sized pockets within 2% of ms_volume",
+          "[surface_mesh]") {
+  // A cast's volume is its cavity's ms_volume up to the lattice's error
+  // and, for a pocket, the fractional split at its mouths (README, Meshes):
+  // asserted for every void and every pocket of at least
+  // kFullResolutionCast; smaller pockets are counted.
+  std::size_t asserted = 0;
+  for (const char* name : {"1fbl.pdb", "1UYD.pdb", "3stdA.pdb", "1fkgA.pdb"}) {
+    const molecule::Structure st = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/" + name);
+    const molecule::CavityOptions options;
+    const molecule::PocketSearch search = molecule::search_pockets(st, options);
+    const alpha::UnionOfBalls balls(*search.complex);
+    const alpha::ErodedUnion eu(balls, options.probe);
+    const auto check = [&](const molecule::Cavity& c, bool is_void, std::size_t rank) {
+      const alpha::SurfaceMesh m = alpha::cells_mesh(eu, c.cells, molecule::cast_spacing(0.5, c.ms_volume));
+      const testing::SurfaceReport report = testing::surface_report(m);
+      INFO(name << (is_void ? " void " : " pocket ") << rank << ": ms_volume " << c.ms_volume << ", "
+                << report.summary());
+      CHECK(report.closed_manifold());
+      CHECK(testing::intersecting_pairs(m) == 0);
+      if (!is_void && c.ms_volume < molecule::kFullResolutionCast) return;
+      CHECK(report.volume == Approx(c.ms_volume).epsilon(0.02));
+      ++asserted;
+    };
+    for (std::size_t i = 0; i < search.cavities.pockets.size(); ++i) check(search.cavities.pockets[i], false, i + 1);
+    for (std::size_t i = 0; i < search.cavities.voids.size(); ++i) check(search.cavities.voids[i], true, i + 1);
+  }
+  CHECK(asserted >= 5);
 }

@@ -216,6 +216,15 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
   return contour(lattice, inside, [&](std::size_t a, std::size_t b) {
     const Nearby& near = hoods.of(std::min(a, b));
     const Vec3 pa = lattice.node(a), pb = lattice.node(b);
+    // Most crossings are on the molecular surface, b in the body: found by
+    // Newton's method as the surface's vertices are, and kept when the
+    // point just before it is held (else the cast ends earlier: at a
+    // mouth, or where another cell's share begins).
+    if (near.nearest(pb, r).on == Nearest::On::far) {
+      const Vec3 p = crossing(near, pb, pa, r, hoods.limit()).first;
+      const double t = dot(p - pa, pb - pa) / dot(pb - pa, pb - pa);
+      if (held(near, along(pa, pb, t - kRootPrecision))) return p;
+    }
     double ta = 0, tb = 1;  // held at ta, not at tb
     while (tb - ta > kRootPrecision) {
       const double mid = (ta + tb) / 2;

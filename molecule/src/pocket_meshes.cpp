@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -34,7 +35,7 @@ std::map<alpha::Index, std::size_t> cell_ranks(const Cavities& cavities, const C
 
 // The cast of one cavity, in the colour of its rank.
 TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_t rank, double resolution) {
-  TriangleMesh m = from(alpha::cells_mesh(eu, cavity.cells, resolution));
+  TriangleMesh m = from(alpha::cells_mesh(eu, cavity.cells, cast_spacing(resolution, cavity.ms_volume)));
   m.vertex_colors.assign(m.points.size(), rank_color(rank));
   m.vertex_sites.assign(m.points.size(), int(rank));
   m.face_colors.assign(m.triangles.size(), rank_color(rank));
@@ -42,6 +43,10 @@ TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_
 }
 
 }  // namespace
+
+double cast_spacing(double resolution, double ms_volume) {
+  return resolution * std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.5, 1.0);
+}
 
 PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {
   const auto start = std::chrono::steady_clock::now();

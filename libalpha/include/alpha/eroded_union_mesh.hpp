@@ -24,7 +24,10 @@
 // space (a cavity's ms_volume) when the cells are closed by triangles of
 // the dual complex (a void); else only roughly: those shares are
 // fractional (alpha/union_of_balls.hpp), exact in sum only over such
-// closed regions.
+// closed regions. Its vertices on the molecular surface are found as the
+// surface's are (Newton's method on the distance); the others (mouths,
+// where another cell's share begins) by bisection on that membership, to
+// 1e-6 of the spacing.
 #pragma once
 #include <span>
 #include <vector>

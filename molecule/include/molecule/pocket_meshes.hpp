@@ -12,11 +12,12 @@
 //             surface bounds it (alpha::cells_mesh of its cells), capped
 //             flat at its mouths, in its colour, every vertex's site its
 //             rank by colour. Its volume approaches a void's ms_volume;
-//             a pocket's only roughly (README, Meshes: ms_volume's shares
-//             are fractional, exact only over regions closed by the dual
-//             complex).
+//             a pocket's up to the fractional split at its mouths (README,
+//             Meshes: ms_volume's shares are exact only over regions
+//             closed by the dual complex).
 //
-// Triangle size is set by `resolution`, the lattice spacing in A.
+// Triangle size is set by `resolution`, the lattice spacing in A (finer
+// for small casts: cast_spacing).
 #pragma once
 #include <vector>
 
@@ -34,6 +35,15 @@ struct PocketMeshes {
 // Default triangle size: a 3,000-atom protein meshes in about a second,
 // within 1% of the analytic area and volume.
 inline constexpr double kDefaultMeshResolution = 0.5;
+
+// A cast's lattice is finer for a small cavity, whose volume a lattice
+// gets relatively less right (its error goes as the spacing squared times
+// the area, and a small cavity has more area per volume): below
+// kFullResolutionCast of ms_volume the spacing is resolution *
+// cbrt(ms_volume / kFullResolutionCast) (as many lattice cells across as
+// such a cast), at least half the resolution.
+inline constexpr double kFullResolutionCast = 150;  // A^3
+double cast_spacing(double resolution, double ms_volume);
 
 // Throws alpha::Error for a resolution that is not > 0 or a molecule too
 // large for it (more than 2^31 lattice nodes).
