@@ -3,8 +3,10 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <random>
@@ -344,6 +346,112 @@ TEST_CASE("inputs outside the filter's range are compared exactly", "[sizes]") {
     for (Vec3& p : in.pts) p = {p.x * scale, p.y * scale, p.z * scale};
     SizeKernel k = in.kernel();
     check_random_simplices(k, in, 40, 52);
+  }
+}
+
+namespace {
+
+// The double nearest to q, ties to even, by rationals alone.
+double nearest(const mpq_class& q) {
+  const double t = q.get_d();  // truncated: t and its neighbour away from 0 bracket q
+  const double away = std::nextafter(t, q > 0 ? HUGE_VAL : -HUGE_VAL);
+  const int c = cmp(abs(q - mpq_class(t)), abs(mpq_class(away) - q));
+  if (c != 0 || mpq_class(t) == q) return c <= 0 ? t : away;
+  return (std::bit_cast<std::uint64_t>(t) & 1) == 0 ? t : away;
+}
+bool is_midpoint(const mpq_class& q) {
+  const double t = q.get_d();
+  return mpq_class(t) != q && 2 * q == mpq_class(t) + mpq_class(std::nextafter(t, q > 0 ? HUGE_VAL : -HUGE_VAL));
+}
+
+struct RoundingCounts {
+  std::size_t checked = 0, decided = 0, ties = 0;
+};
+
+// rounded_size, its double-double path (where it decides) and its exact
+// path all give the nearest double, bit for bit (a vertex of weight 0 has
+// size -0: its exact value -w). Vertices do not count: only the exact path
+// takes them.
+void check_rounding(const SizeKernel& k, const Simplex& s, const mpq_class& exact, RoundingCounts& counts) {
+  const std::uint64_t want = std::bit_cast<std::uint64_t>(s.n == 1 && exact == 0 ? -0.0 : nearest(exact));
+  INFO("exact size " << exact.get_str() << ", vertices " << s.v[0] << " " << s.v[1] << " " << s.v[2] << " " << s.v[3]);
+  CHECK(std::bit_cast<std::uint64_t>(rounded_exact(k, s)) == want);
+  CHECK(std::bit_cast<std::uint64_t>(k.rounded_size(s)) == want);
+  if (const std::optional<double> fast = rounded_filtered(k, s)) {
+    CHECK(std::bit_cast<std::uint64_t>(*fast) == want);
+    ++counts.decided;
+  }
+  counts.ties += is_midpoint(exact);
+  counts.checked += s.n > 1;
+}
+
+}  // namespace
+
+TEST_CASE("rounded sizes: the double-double path rounds as the exact one", "[sizes]") {
+  SECTION("edges whose sizes are ties or near ties, over magnitudes") {
+    // An edge (0,0,0)-(a,b,c) has size (a^2+b^2+c^2)/4: integers of 27-28
+    // bits make 54-57 bit squares, on or next to midpoints of doubles.
+    std::mt19937_64 rng(61);
+    std::uniform_int_distribution<std::int64_t> bits27(std::int64_t(94906266), (std::int64_t(1) << 27) - 1);
+    std::uniform_int_distribution<std::int64_t> bits28(std::int64_t(1) << 27, (std::int64_t(1) << 28) - 1);
+    for (const int e : {-150, -78, -30, 0, 40, 70, 200}) {  // -150 and 200: outside the filter's range
+      INFO("scale 2^" << e);
+      Input in;
+      in.pts.push_back({0, 0, 0});
+      for (int i = 0; i < 200; ++i) {
+        const double a = std::ldexp(double(i % 2 ? bits27(rng) : bits28(rng)), e);
+        const double b = i % 3 ? 0.0 : std::ldexp(double(bits27(rng)), e - 13);
+        in.pts.push_back({a, b, i % 5 ? 0.0 : std::ldexp(double(bits27(rng)), e)});
+      }
+      in.pts.push_back({std::ldexp(double((std::int64_t(1) << 27) - 1), e), 0, 0});  // size a tie
+      const SizeKernel k = in.kernel();
+      RoundingCounts counts;
+      for (Index i = 1; i < in.pts.size(); ++i) check_rounding(k, {0, i}, oracle(in, {0, i})->r2, counts);
+      CHECK(counts.ties > 0);
+      if (e > -100 && e < 100) CHECK(counts.decided > counts.checked / 2);  // all but ties and near ties
+    }
+  }
+  SECTION("weighted edges, triangles and tetrahedra on grids: exact small rationals") {
+    for (const double spacing : {1.0, 0x1p-40, 0x1p30}) {
+      for (const bool weighted : {false, true}) {
+        INFO("spacing " << spacing << " weighted " << weighted);
+        Input in;
+        in.pts = testing::grid_points(4, spacing);
+        if (weighted)
+          for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back(spacing * spacing * (0.25 + double(i % 3)));
+        std::vector<Simplex> s;
+        std::vector<mpq_class> exact;
+        random_simplices(in, 400, 62, s, exact);
+        const SizeKernel k = in.kernel();
+        RoundingCounts counts;
+        for (std::size_t i = 0; i < s.size(); ++i) check_rounding(k, s[i], exact[i], counts);
+        CHECK(counts.decided > counts.checked / 2);
+      }
+    }
+  }
+  SECTION("random and nearly flat simplices") {
+    Input in;
+    in.pts = testing::random_points(300, 63, 10.0);
+    in.w = testing::random_weights(300, 64, -0.5, 2.0);
+    for (int i = 0; i < 20; ++i)  // slivers: a fourth point one ulp-ish off the plane of three
+      in.pts.push_back({0.5 + 0.01 * i, 0.25, std::ldexp(1.0 + i, -40)}), in.w.push_back(0);
+    std::vector<Simplex> s;
+    std::vector<mpq_class> exact;
+    random_simplices(in, 1500, 65, s, exact);
+    for (const Index base : {Index(0), Index(1)})
+      for (Index i = 300; i < in.pts.size(); ++i) {
+        const Simplex t(base == 0 ? Index(300) : Index(301), Index(302), Index(303), i);
+        if (i > 303 && oracle(in, t)) s.push_back(t), exact.push_back(oracle(in, t)->r2);
+      }
+    for (const bool weighted : {false, true}) {
+      const SizeKernel k(in.pts.data(), weighted ? in.w.data() : nullptr);
+      Input plain = in;
+      if (!weighted) plain.w.clear();
+      RoundingCounts counts;
+      for (std::size_t i = 0; i < s.size(); ++i)
+        if (const auto sp = oracle(plain, s[i])) check_rounding(k, s[i], sp->r2, counts);
+      CHECK(counts.decided > 0.99 * double(counts.checked));
+    }
   }
 }
 

@@ -5,6 +5,8 @@
 #pragma once
 #include <gmpxx.h>
 
+#include <optional>
+
 #include "alpha/sizes.hpp"
 
 namespace alpha {
@@ -21,5 +23,12 @@ int compare_exact(const ExactSize& a, const ExactSize& b);
 ExactSize exact_fraction(const SizeKernel& kernel, const Simplex& s);
 // The exact size, reduced.
 mpq_class exact_size(const SizeKernel& kernel, const Simplex& s);
+
+// SizeKernel::rounded_size in its two ways: the nearest double decided in
+// double-double arithmetic, or nothing where that cannot be certain (a
+// value near or on a midpoint of two doubles, a near-degenerate simplex,
+// values outside its range); and from the exact fraction, always.
+std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& s);
+double rounded_exact(const SizeKernel& kernel, const Simplex& s);
 
 }  // namespace alpha

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 
 #include "alpha/error.hpp"
 #include "dyadic.hpp"
@@ -451,12 +452,12 @@ int compare_exact(const ExactSize& a, const ExactSize& b) {
   return cmp(left, right) * sgn(a.den) * sgn(b.den);
 }
 
-double SizeKernel::rounded_size(const Simplex& s) const {
-  const Size f = size(s);
+double rounded_exact(const SizeKernel& kernel, const Simplex& s) {
+  const Size f = kernel.size(s);
   if (f.error == 0) return f.value;
   // From the unreduced fraction by one integer division (no gcd): the
   // quotient's 54-56 leading bits and a sticky remainder round correctly.
-  const ExactSize x = exact_fraction(*this, s);
+  const ExactSize x = exact_fraction(kernel, s);
   const int sign = sgn(x.num) * sgn(x.den);
   if (sign == 0) return 0.0;
   mpz_class a = abs(x.num), b = abs(x.den), q, r;
@@ -472,8 +473,149 @@ double SizeKernel::rounded_size(const Simplex& s) const {
   if (rest > half || (rest == half && (r != 0 || (m & 1)))) ++m;
   const long exponent = 2L * x.unit - k + extra;
   // Below the normal range ldexp would round a second time.
-  if (exponent + 53 < -1021) return nearest_double(exact_size(*this, s));
+  if (exponent + 53 < -1021) return nearest_double(exact_size(kernel, s));
   return sign * std::ldexp(double(m), int(std::clamp(exponent, -2000L, 2000L)));
+}
+
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// The nearest double without GMP: N and D in double-double arithmetic
+// (about 106 bits), then the side of the exact N / D against the midpoints
+// around a candidate double, each a sign with a rigorous bound.
+//
+// A Twin is hi + lo with |lo| <= ulp(hi) / 2, plus its permanent p as in the
+// filter. The operations are those of Joldes, Muller & Popescu (ACM TOMS
+// 2017): AccurateDWPlusDW errs by less than 3u^2 of its result, DWTimesDW1
+// by less than 7u^2; we use u2 = 16u^2 for either. The leaves (coordinate
+// and weight differences) are exact here (two_diff), so the levels of the
+// filter analysis restart at 0:
+//   edge N 10, D 4; triangle N 16, D 8; tetra N 22, D 12
+// and |Twin(E) - E| <= (level + 1) u2 perm(E). Within the filter's range
+// a product's underflow errs by less than 2^-435 of its permanent, well
+// under u2; Dekker's product cannot overflow below 2^996.
+constexpr double kU2 = 16 * kU * kU;
+constexpr double kTwinN[4] = {0, 11 * kU2, 17 * kU2, 23 * kU2};
+constexpr double kTwinD[4] = {0, 5 * kU2, 9 * kU2, 13 * kU2};
+// The permanents' own roundings (at most 60 factors 1 + u) and the few in
+// the bounds.
+constexpr double kTwinSlack = 1 + 0x1p-40;
+
+struct Twin {
+  double hi = 0, lo = 0, p = 0;
+  Twin() = default;
+  Twin(int i) : hi(i), p(std::abs(i)) {}
+  Twin(double h, double l, double perm) : hi(h), lo(l), p(perm) {}
+};
+
+void two_sum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double bb = s - a;
+  e = (a - (s - bb)) + (b - bb);
+}
+void fast_two_sum(double a, double b, double& s, double& e) {  // |a| >= |b| or a == 0
+  s = a + b;
+  e = b - (s - a);
+}
+void veltkamp(double a, double& high, double& low) {
+  const double t = a * 134217729.0;  // 2^27 + 1
+  high = t - (t - a);
+  low = a - high;
+}
+void two_prod(double a, double b, double& p, double& e) {  // Dekker: exact without FMA
+  p = a * b;
+  double ah, al, bh, bl;
+  veltkamp(a, ah, al);
+  veltkamp(b, bh, bl);
+  e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
+Twin operator+(const Twin& x, const Twin& y) {
+  double sh, sl, th, tl, vh, vl, zh, zl;
+  two_sum(x.hi, y.hi, sh, sl);
+  two_sum(x.lo, y.lo, th, tl);
+  fast_two_sum(sh, sl + th, vh, vl);
+  fast_two_sum(vh, tl + vl, zh, zl);
+  return {zh, zl, x.p + y.p};
+}
+Twin operator-(const Twin& x, const Twin& y) { return x + Twin(-y.hi, -y.lo, y.p); }
+Twin operator*(const Twin& x, const Twin& y) {
+  double ch, cl, zh, zl;
+  two_prod(x.hi, y.hi, ch, cl);
+  fast_two_sum(ch, cl + (x.hi * y.lo + x.lo * y.hi), zh, zl);
+  return {zh, zl, x.p * y.p};
+}
+
+// a - b exactly, as a leaf.
+Twin exact_difference(double a, double b) {
+  double s, e;
+  two_sum(a, -b, s, e);
+  return {s, e, std::fabs(s) + std::fabs(e)};
+}
+
+// Sign of N - (c + h) D for the exact N, D within eN, eD of the Twins
+// (D > 0; h a power of two with h D normal), or 0 when not certain.
+int midpoint_side(const Twin& N, double eN, const Twin& D, double eD, double c, double h) {
+  double p, e;
+  two_prod(c, D.hi, p, e);
+  const double t = c * D.lo;  // errs by at most u |t|
+  const Twin a = N - Twin(p, e, 0);
+  const Twin b = a - Twin(t, 0, 0);
+  const Twin r = b - Twin(h * D.hi, h * D.lo, 0);
+  const double ops = kU2 * (std::fabs(a.hi) + std::fabs(b.hi) + std::fabs(r.hi));
+  const double bound = (eN + std::fabs(c + h) * eD + kU * std::fabs(t) + ops) * kTwinSlack + kTiny;
+  if (r.hi > bound) return 1;
+  if (r.hi < -bound) return -1;
+  return 0;
+}
+
+bool in_twin_range(double x, double lo, double hi) { return std::fabs(x) >= lo && std::fabs(x) <= hi; }
+
+}  // namespace
+
+std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& simplex) {
+  const Simplex s = sorted(simplex);
+  if (s.n < 2) return std::nullopt;
+  const Vec3* pts = kernel.points();
+  const double* w = kernel.weights();
+  // The filter's leaves, for its range check; here exact differences.
+  bool ok = true;
+  (void)approx_local(pts, w, s, ok);
+  if (!ok) return std::nullopt;
+  Local<Twin> l;
+  l.k = s.n - 1;
+  const double w0 = w ? w[s.v[0]] : 0.0;
+  l.w0 = Twin(w0, 0, std::fabs(w0));
+  const Vec3& p0 = pts[s.v[0]];
+  for (int i = 0; i < l.k; ++i) {
+    const Vec3& q = pts[s.v[i + 1]];
+    l.u[i][0] = exact_difference(q.x, p0.x);
+    l.u[i][1] = exact_difference(q.y, p0.y);
+    l.u[i][2] = exact_difference(q.z, p0.z);
+    l.dw[i] = w ? exact_difference(w[s.v[i + 1]], w0) : Twin(0);
+  }
+  Twin N, D;
+  size_terms(l, N, D);
+  const double eN = kTwinN[l.k] * N.p * kTwinSlack, eD = kTwinD[l.k] * D.p * kTwinSlack;
+  // D certainly positive, and the candidates and h D away from under- and overflow.
+  if (!(D.hi - eD > 0) || !in_twin_range(D.hi, 0x1p-500, 0x1p500)) return std::nullopt;
+  double c = N.hi / D.hi;
+  for (int step = 0; step < 4 && in_twin_range(c, 0x1p-400, 0x1p400); ++step) {
+    const double up = std::nextafter(c, HUGE_VAL), down = std::nextafter(c, -HUGE_VAL);
+    const int above = midpoint_side(N, eN, D, eD, c, (up - c) / 2);
+    const int below = midpoint_side(N, eN, D, eD, c, (down - c) / 2);
+    if (above < 0 && below > 0) return c;
+    if (above > 0) c = up;
+    else if (below < 0) c = down;
+    else return std::nullopt;  // near a midpoint (or on it: a tie)
+  }
+  return std::nullopt;
+}
+
+double SizeKernel::rounded_size(const Simplex& s) const {
+  if (const std::optional<double> r = rounded_filtered(*this, s)) return *r;
+  return rounded_exact(*this, s);
 }
 
 int SizeKernel::compare(const Simplex& a, const Simplex& b) { return compare(a, size(a), b, size(b)); }
