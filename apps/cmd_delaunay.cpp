@@ -55,17 +55,13 @@ int run_delaunay(const DelaunayOptions& opt) {
   const alpha::Triangulation& t = *tri;
   const double build_s = build_time.seconds();
 
-  Stopwatch simplices_time;
-  const alpha::Simplices s(t);
-  const double simplices_s = simplices_time.seconds();
+  const alpha::SimplexCounts s = alpha::count_simplices(t);  // no edge and triangle tables
 
   spdlog::info("triangulation: {:.3f} s ({:.2f} us/point), {} vertices, {} finite cells", build_s,
                1e6 * build_s / double(n), t.num_vertices(), t.num_finite_cells());
-  spdlog::info("simplices: {:.3f} s, {} edges, {} triangles", simplices_s, s.num_edges(),
-               s.num_triangles());
-  spdlog::info("memory: triangulation {} ({:.0f} bytes/point), simplices {} ({:.0f} bytes/point), peak RSS {}",
-               mib(t.memory_bytes()), double(t.memory_bytes()) / double(n), mib(s.memory_bytes()),
-               double(s.memory_bytes()) / double(n), mib(peak_rss_bytes()));
+  spdlog::info("simplices: {} edges, {} triangles", s.edges, s.triangles);
+  spdlog::info("memory: triangulation {} ({:.0f} bytes/point), peak RSS {}", mib(t.memory_bytes()),
+               double(t.memory_bytes()) / double(n), mib(peak_rss_bytes()));
   log_stage_counts("orient3d", t.predicate_stats().orient);
   log_stage_counts("power test", t.predicate_stats().power);
 
@@ -84,18 +80,18 @@ int run_delaunay(const DelaunayOptions& opt) {
     j["vertices"] = t.num_vertices();
     j["duplicates"] = t.num_duplicates();
     j["hidden"] = t.num_hidden();
-    j["edges"] = s.num_edges();
-    j["triangles"] = s.num_triangles();
+    j["edges"] = s.edges;
+    j["triangles"] = s.triangles;
     j["tetrahedra"] = t.num_finite_cells();
-    j["hull_triangles"] = s.num_hull_triangles();
+    j["hull_triangles"] = s.hull_triangles;
     if (opt.check) j["valid"] = valid;
     std::printf("%s\n", j.dump().c_str());
   } else {
     std::printf("%s: %zu points, %zu vertices (%zu duplicates, %zu hidden)\n", opt.input.file.c_str(), n,
                 t.num_vertices(), t.num_duplicates(), t.num_hidden());
     std::printf("%s triangulation: %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra\n",
-                t.weighted() ? "regular" : "Delaunay", s.num_edges(), s.num_triangles(),
-                s.num_hull_triangles(), t.num_finite_cells());
+                t.weighted() ? "regular" : "Delaunay", s.edges, s.triangles,
+                s.hull_triangles, t.num_finite_cells());
     if (opt.check) std::printf("valid: %s\n", valid ? "yes" : "NO");
   }
   flush_stdout();

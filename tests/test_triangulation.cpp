@@ -201,11 +201,20 @@ TEST_CASE("Unusable input gives a clear error", "[triangulation][errors]") {
 }
 
 TEST_CASE("Edges and triangles: counts, incidences and Euler characteristic", "[simplices]") {
-  for (int kind = 0; kind < 3; ++kind) {
+  // Random, a grid (cospherical cubes), points on one sphere, duplicates,
+  // weighted with hidden points.
+  std::vector<Vec3> duplicated = testing::grid_points(3);
+  for (const Vec3& p : testing::grid_points(3)) duplicated.push_back(p);
+  for (int kind = 0; kind < 5; ++kind) {
     const Triangulation t = kind == 0   ? Triangulation(testing::random_points(300, 5))
                             : kind == 1 ? Triangulation(testing::grid_points(5))
+                            : kind == 2 ? Triangulation(testing::sphere_points(50))
+                            : kind == 3 ? Triangulation(duplicated)
                                         : Triangulation(testing::random_points(300, 6, 10.0),
                                                         testing::random_weights(300, 7, 0.0, 4.0));
+    INFO("kind " << kind);
+    if (kind == 3) CHECK(t.num_duplicates() == 27);
+    if (kind == 4) CHECK(t.num_hidden() > 0);
     const Simplices s(t);
     // Finite complex of a convex ball: V - E + F - C = 1; hull surface: V_h - E_h + F_h = 2.
     const long v = long(t.num_vertices()), e = long(s.num_edges()), f = long(s.num_triangles()),
@@ -213,6 +222,10 @@ TEST_CASE("Edges and triangles: counts, incidences and Euler characteristic", "[
     CHECK(v - e + f - c == 1);
     // Each finite cell has 4 triangles; each interior triangle 2 finite cells.
     CHECK(4 * c == 2 * (f - long(s.num_hull_triangles())) + long(s.num_hull_triangles()));
+    const SimplexCounts counts = count_simplices(t);
+    CHECK(counts.edges == s.num_edges());
+    CHECK(counts.triangles == s.num_triangles());
+    CHECK(counts.hull_triangles == s.num_hull_triangles());
     for (Index x = 0; x < s.num_triangles(); ++x) {
       const auto& tri = s.triangle(x);
       for (int k = 0; k < 3; ++k) {

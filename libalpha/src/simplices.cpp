@@ -16,6 +16,12 @@ constexpr int kLocalEdge[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {
 
 }  // namespace
 
+SimplexCounts count_simplices(const Triangulation& t) {
+  const std::size_t cells = t.num_finite_cells(), hull = t.num_cells() - cells;
+  const std::size_t triangles = (4 * cells + hull) / 2;
+  return {t.num_vertices() + triangles - cells - 1, triangles, hull};
+}
+
 Simplices::Simplices(const Triangulation& t) : t_(&t) {
   const std::size_t np = t.num_points();
   // Edges in order of the first cell holding them: walking the cells in

@@ -80,6 +80,16 @@ private:
   }
 };
 
+// The numbers of finite edges, triangles and hull triangles of t from its
+// cell counts alone, for callers that need no tables: each infinite cell
+// holds one hull triangle, each finite cell 4 triangles of which the
+// interior ones are counted twice, and the finite complex is a ball
+// (Euler: V - E + F - C = 1).
+struct SimplexCounts {
+  std::size_t edges = 0, triangles = 0, hull_triangles = 0;
+};
+SimplexCounts count_simplices(const Triangulation& t);
+
 class Simplices::EdgeTriangles {
 public:
   class iterator {
