@@ -11,11 +11,13 @@
 // at the same critical value are left out. Lines are sorted by dim, birth,
 // death (GUDHI's plain "dim birth death" diagram format).
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <fmt/compile.h>
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
@@ -26,8 +28,9 @@
 namespace alphapocket {
 namespace {
 
-// Shortest text that reads back as the same double ("0" for -0).
-std::string value_text(double v) { return fmt::format("{}", printable(v)); }
+// Appends the shortest text that reads back as the same double ("0" for -0).
+// (A compiled format: the value's own formatting, no format string parsing.)
+void append_value(std::string& out, double v) { fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"), printable(v)); }
 
 int run_persistence(const InputOptions& opt) {
   const AlphaInput in = load_alpha_complex(opt);
@@ -39,8 +42,15 @@ int run_persistence(const InputOptions& opt) {
   std::string out;
   for (const alpha::PersistencePair& p : pairs) {
     if (p.birth == p.death) continue;  // zero length (the complex keeps none; be sure)
-    out += fmt::format("{} {} {}\n", p.dim, value_text(ac.spectrum_value(p.birth)),
-                       p.death == alpha::kNever ? std::string("inf") : value_text(ac.spectrum_value(p.death)));
+    out += char('0' + p.dim);
+    out += ' ';
+    append_value(out, ac.spectrum_value(p.birth));
+    out += ' ';
+    if (p.death == alpha::kNever)
+      out += "inf";
+    else
+      append_value(out, ac.spectrum_value(p.death));
+    out += '\n';
     ++lines;
   }
   if (!out.empty() && std::fwrite(out.data(), 1, out.size(), stdout) != out.size())

@@ -579,14 +579,12 @@ std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& 
   if (s.n < 2) return std::nullopt;
   const Vec3* pts = kernel.points();
   const double* w = kernel.weights();
-  // The filter's leaves, for its range check; here exact differences.
+  // The filter's leaves (exact here), in the filter's range.
   bool ok = true;
-  (void)approx_local(pts, w, s, ok);
-  if (!ok) return std::nullopt;
   Local<Twin> l;
   l.k = s.n - 1;
   const double w0 = w ? w[s.v[0]] : 0.0;
-  l.w0 = Twin(w0, 0, std::fabs(w0));
+  l.w0 = Twin(area_leaf(w0, ok).v, 0, std::fabs(w0));
   const Vec3& p0 = pts[s.v[0]];
   for (int i = 0; i < l.k; ++i) {
     const Vec3& q = pts[s.v[i + 1]];
@@ -594,7 +592,10 @@ std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& 
     l.u[i][1] = exact_difference(q.y, p0.y);
     l.u[i][2] = exact_difference(q.z, p0.z);
     l.dw[i] = w ? exact_difference(w[s.v[i + 1]], w0) : Twin(0);
+    for (int a = 0; a < 3; ++a) length_leaf(l.u[i][a].hi, ok);
+    area_leaf(l.dw[i].hi, ok);
   }
+  if (!ok) return std::nullopt;
   Twin N, D;
   size_terms(l, N, D);
   const double eN = kTwinN[l.k] * N.p * kTwinSlack, eD = kTwinD[l.k] * D.p * kTwinSlack;
