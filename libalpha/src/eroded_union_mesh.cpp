@@ -18,8 +18,10 @@ using Nearest = ErodedUnion::Nearest;
 
 // Root finding stops at this fraction of the spacing.
 constexpr double kRootPrecision = 1e-6;
-// A vertex stays this fraction of the spacing away from the nodes.
-constexpr double kNodeGap = 1e-5;
+// A vertex stays this fraction of the spacing away from the nodes: far
+// enough to stay apart in a file's single precision (a float's step is
+// 6e-5 A at 500 A), or triangles at a node cross once written.
+constexpr double kNodeGap = 1e-3;
 // Blocks whose neighbourhoods are kept.
 constexpr std::size_t kCachedBlocks = 8;
 
