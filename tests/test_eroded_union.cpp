@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <vector>
 
 #include "alpha/error.hpp"
@@ -124,6 +125,13 @@ TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
     }
     CHECK(volume == Approx(whole.volume).epsilon(1e-12));
     CHECK(area == Approx(whole.area).epsilon(1e-12));
+    // cells_share (scratch space kept from cell to cell) adds the same
+    // shares in the same order: bit for bit the same sum.
+    std::vector<Index> all(u.t->num_cells());
+    std::iota(all.begin(), all.end(), Index(0));
+    const LayerShare together = e.cells_share(all);
+    CHECK(together.volume == volume);
+    CHECK(together.area == area);
   }
 }
 

@@ -153,12 +153,24 @@ LayerShare ErodedUnion::measure(std::vector<LayerShare>* per_ball) const {
   return sum.value();
 }
 
-LayerShare ErodedUnion::cell_share(Index c) const {
+LayerShare ErodedUnion::cell_share(Index c) const { return share(Integrator(*this), c); }
+
+LayerShare ErodedUnion::cells_share(std::span<const Index> cells) const {
+  const Integrator in(*this);
+  LayerShare out;
+  for (Index c : cells) {
+    const LayerShare x = share(in, c);
+    out.volume += x.volume;
+    out.area += x.area;
+  }
+  return out;
+}
+
+LayerShare ErodedUnion::share(const Integrator& in, Index c) const {
   const AlphaComplex& ac = balls_->complex();
   const Triangulation& t = ac.triangulation();
   const Simplices& s = ac.simplices();
   if (t.is_infinite(c)) return {};
-  const Integrator in(*this);
   LayerSum sum;
   sum.add({balls_->cell_area(c, shell_factor_), balls_->cell_area(c, contact_factor_)});
   const auto& v = t.cell(c).v;
@@ -185,7 +197,9 @@ ErodedUnion::Nearby& ErodedUnion::Nearby::operator=(Nearby&&) noexcept = default
 ErodedUnion::Nearby::~Nearby() = default;
 
 ErodedUnion::Nearby ErodedUnion::nearby(const Vec3& center, double reach) const {
-  return Nearby(*this, std::make_unique<Nearby::Hood>(Integrator(*this).gather(center, reach)));
+  auto hood = std::make_unique<Nearby::Hood>();
+  Integrator(*this).gather(center, reach, *hood);
+  return Nearby(*this, std::move(hood));
 }
 
 ErodedUnion::Nearest ErodedUnion::Nearby::nearest(const Vec3& x, double limit) const {

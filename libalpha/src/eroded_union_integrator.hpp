@@ -377,9 +377,9 @@ public:
         const double begin = piece.begin + piece.length * k / parts, end = piece.begin + piece.length * (k + 1) / parts;
         // The piece's points are within r of the arc, whose ends are a chord
         // 2 rho sin(length / 4) from its midpoint.
-        const Hood hood = gather(c.o + c.rho * c.radial((begin + end) / 2), 2 * c.rho * std::sin((end - begin) / 4) + r_);
+        gather(c.o + c.rho * c.radial((begin + end) / 2), 2 * c.rho * std::sin((end - begin) / 4) + r_, piece_);
         bool all_clear;
-        const LayerShare x = arc_piece(hood, c, begin, end, all_clear);
+        const LayerShare x = arc_piece(piece_, c, begin, end, all_clear);
         if (per_ball) {
           PieceShares split;
           const Vec3 mid = c.o + c.rho * c.radial((begin + end) / 2);
@@ -439,7 +439,8 @@ public:
       dir[k] = (1 / norm(d)) * d;
     }
     const SphericalTriangle cone(dir);
-    const Hood hood = gather(vx.p, r_);
+    gather(vx.p, r_, piece_);
+    const Hood& hood = piece_;
     const auto clear_at_r = [&](double s, double sigma) {
       return clear(hood, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
     };
@@ -500,7 +501,11 @@ private:
   const Triangulation& t_;
   const Simplices& s_;
   double r_, tol_;
-  mutable std::array<Hood, 8> rows_;  // arc_piece's, per node phi (kept: no allocation per piece)
+  // Scratch kept from piece to piece (no allocation per piece): a piece's
+  // hood, arc_piece's rows (per node phi), gather's balls.
+  mutable Hood piece_;
+  mutable std::array<Hood, 8> rows_;
+  mutable std::vector<Index> ids_;
 
   std::span<const Arc> edge_arcs(Index e) const {
     return {eu_.arcs_.data() + eu_.arc_start_[e], eu_.arcs_.data() + eu_.arc_start_[e + 1]};
@@ -540,14 +545,20 @@ private:
     return norm(b.c - x) < b.radius + reach + tol_;
   }
 
-  // What clear() can find or be inside at points within `reach` of `center`.
-  Hood gather(const Vec3& center, double reach) const {
+  // Into h, what clear() can find or be inside at points within `reach`
+  // of `center`.
+  void gather(const Vec3& center, double reach, Hood& h) const {
     const double radius = reach + r_ + tol_;
-    Hood h;
+    h.balls.clear();
+    h.circles.clear();
+    h.vertices.clear();
+    h.buried.clear();
+    h.last = {};
     // Balls whose sphere is within radius: the ends of the circles.
     // Buried balls are left out of the pieces (a point inside one is
     // inside another, up to rounding), kept apart for nearest().
-    std::vector<Index> ids;
+    std::vector<Index>& ids = ids_;
+    ids.clear();
     eu_.ball_grid_.visit(center, radius + eu_.max_radius_, [&](Index k) {
       if (norm(t_.point(k) - center) >= std::sqrt(t_.weight(k)) + radius) return;
       if (eu_.balls_->ball_areas()[k] > 0)
@@ -571,7 +582,6 @@ private:
       if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
     });
     std::sort(h.vertices.begin(), h.vertices.end());
-    return h;
   }
 
   // Into `out`, what of h (gathered for a wider reach) clear() can find or

@@ -247,7 +247,7 @@ private:
     cav.sa_volume = sa_volume;
     // The probe layer between the SA and the molecular surface whose
     // nearest solvent-accessible point lies on the cavity's wall.
-    alpha::LayerShare layer;
+    const alpha::LayerShare layer = excluded_.cells_share(cells);
     const Index id = cavity_of_[cells.front()];
     std::vector<Opening> openings;
     Index last = cells.front();
@@ -270,9 +270,6 @@ private:
       const double weight = std::max(0.0, m.sa_empty);
       weighted = weighted + weight * m.centroid;
       total_weight += weight;
-      const alpha::LayerShare share = excluded_.cell_share(c);
-      layer.volume += share.volume;
-      layer.area += share.area;
     }
     cav.sa_area = std::max(0.0, cav.sa_area);  // a sum of fractional shares, as sa_volume
     cav.ms_volume = std::max(cav.sa_volume, cav.sa_volume + layer.volume);
