@@ -288,6 +288,9 @@ struct ErodedUnion::Nearby::Hood {
   };
   std::vector<Ball> balls;  // by id
   std::vector<std::pair<Index, Circle>> circles;
+  // Per circle: a ball (centre, radius) holding all its arcs' points,
+  // clear()'s first test.
+  std::vector<std::pair<Vec3, double>> arc_bounds;
   std::vector<std::size_t> vertices;
   std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
   mutable std::vector<std::pair<double, std::size_t>> holding;  // nearest()'s scratch
@@ -441,8 +444,18 @@ public:
     const SphericalTriangle cone(dir);
     gather(vx.p, r_, piece_);
     const Hood& hood = piece_;
+    // The points at r lie in the cap about the directions' mean that holds
+    // the three (the cone is inside it when that is less than a quarter
+    // turn wide): within r sin(cap) of its disc's centre.
+    const Vec3 sum = dir[0] + dir[1] + dir[2], mean = (1 / norm(sum)) * sum;
+    const double cos_cap = std::min({dot(mean, dir[0]), dot(mean, dir[1]), dot(mean, dir[2])});
+    const Hood* near_r = &hood;
+    if (cos_cap > 0) {
+      narrow(hood, vx.p + (r_ * cos_cap) * mean, r_ * std::sqrt((1 - cos_cap) * (1 + cos_cap)) + tol_, at_r_[0]);
+      near_r = &at_r_[0];
+    }
     const auto clear_at_r = [&](double s, double sigma) {
-      return clear(hood, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
+      return clear(*near_r, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
     };
     std::array<std::array<bool, 8>, 8> at_r;
     bool all_clear = true;
@@ -502,9 +515,10 @@ private:
   const Simplices& s_;
   double r_, tol_;
   // Scratch kept from piece to piece (no allocation per piece): a piece's
-  // hood, arc_piece's rows (per node phi), gather's balls.
+  // hood, arc_piece's rows and their points at r (per node phi), gather's
+  // balls.
   mutable Hood piece_;
-  mutable std::array<Hood, 8> rows_;
+  mutable std::array<Hood, 8> rows_, at_r_;
   mutable std::vector<Index> ids_;
 
   std::span<const Arc> edge_arcs(Index e) const {
@@ -531,6 +545,16 @@ private:
     return false;
   }
 
+  // A ball holding the points of edge e's arcs (circle c): about the
+  // chord of a single arc up to half a turn, else the circle's.
+  std::pair<Vec3, double> arc_bound(Index e, const Circle& c) const {
+    const std::span<const Arc> set = edge_arcs(e);
+    if (set.size() != 1 || set[0].length > kPi) return {c.o, c.rho};
+    const ArcEnds& a = eu_.arc_ends_[eu_.arc_start_[e]];
+    const double x = a.cos_begin + a.cos_end, y = a.sin_begin + a.sin_end;
+    return {c.o + (c.rho / 2) * (x * c.e1 + y * c.e2), c.rho / 2 * std::hypot(a.cos_end - a.cos_begin, a.sin_end - a.sin_begin)};
+  }
+
   // Whether clear() can find circle c (of edge e) at a point within
   // radius - r of x: through a point of its arcs nearer than r to that
   // point, or, for a circle smaller than r, through its axis.
@@ -551,6 +575,7 @@ private:
     const double radius = reach + r_ + tol_;
     h.balls.clear();
     h.circles.clear();
+    h.arc_bounds.clear();
     h.vertices.clear();
     h.buried.clear();
     h.last = {};
@@ -576,7 +601,9 @@ private:
         const auto& v = s_.edge(e);
         if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
         const Circle c = circle_of(t_, v);
-        if (circle_near(e, c, center, radius)) h.circles.emplace_back(e, c);
+        if (!circle_near(e, c, center, radius)) continue;
+        h.circles.emplace_back(e, c);
+        h.arc_bounds.push_back(arc_bound(e, c));
       }
     eu_.vertex_grid_.visit(center, radius, [&](Index v) {
       if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
@@ -590,12 +617,16 @@ private:
     const double radius = reach + r_ + 2 * tol_;
     out.balls.clear();
     out.circles.clear();
+    out.arc_bounds.clear();
     out.vertices.clear();
     out.last = {};
     for (const Hood::Ball& b : h.balls)
       if (ball_near(b, x, reach)) out.balls.push_back(b);
-    for (const auto& [e, c] : h.circles)
-      if (circle_near(e, c, x, radius)) out.circles.emplace_back(e, c);
+    for (std::size_t k = 0; k < h.circles.size(); ++k)
+      if (circle_near(h.circles[k].first, h.circles[k].second, x, radius)) {
+        out.circles.push_back(h.circles[k]);
+        out.arc_bounds.push_back(h.arc_bounds[k]);
+      }
     for (const std::size_t v : h.vertices)
       if (norm(eu_.vertices_[v].p - x) < radius) out.vertices.push_back(v);
   }
@@ -692,8 +723,14 @@ private:
       in_union = in_union || inside;
     }
     if (!in_union) return found(Nearer::kNone, 0);
-    for (std::size_t k = 0; k < h.circles.size(); ++k)
+    for (std::size_t k = 0; k < h.circles.size(); ++k) {
+      // Only a circle with an arc point nearer than limit can be found
+      // (up to 2 tol_ when x is on its axis): most are further.
+      const auto& [m, b] = h.arc_bounds[k];
+      const double reach = limit + b + 4 * tol_;
+      if (dot(x - m, x - m) >= reach * reach) continue;
       if (circle_finds(h.circles[k].first, h.circles[k].second, x, limit, limit_sq)) return found(Nearer::kCircle, k);
+    }
     const bool is_vertex = self < eu_.vertices_.size();
     for (std::size_t k = 0; k < h.vertices.size(); ++k) {
       const std::size_t v = h.vertices[k];
@@ -767,19 +804,24 @@ private:
     const double psi_i = std::atan2(c.z_i, c.rho), psi_j = std::atan2(c.z_j, c.rho);
     const std::size_t none = eu_.vertices_.size();
     // Each node phi's points are within r of its circle point q: tested
-    // against the part of the hood near q.
+    // against the part of the hood near q (its row). Those at r lie on an
+    // arc about q, psi from psi_i to psi_j (less than half a turn): within
+    // half its chord of the chord's midpoint, tested against the part of
+    // the hood near that.
     const auto clear_at_r = [&](int i, const Vec3& radial, double psi) {
-      return clear(rows_[i], c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
+      return clear(at_r_[i], c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
     };
     std::array<std::array<bool, 8>, 8> at_r;
     all_clear = true;
     for (int i = 0; i < 8; ++i) {
       const Vec3 radial = c.radial(node(begin, end, i));
-      narrow(h, c.o + c.rho * radial, r_, rows_[i]);
+      const Vec3 a = c.ray(radial, psi_i), b = c.ray(radial, psi_j);
+      narrow(h, c.o + c.rho * radial + (r_ / 2) * (a + b), r_ / 2 * norm(b - a) + tol_, at_r_[i]);
       for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(i, radial, node(psi_i, psi_j, j))) && all_clear;
     }
     if (all_clear)
       return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
+    for (int i = 0; i < 8; ++i) narrow(h, c.o + c.rho * c.radial(node(begin, end, i)), r_, rows_[i]);
     // Per phi, psi in pieces where the eroded surface is there (closed
     // forms) or cut off (the rays' volumes up to tau).
     LayerShare out;

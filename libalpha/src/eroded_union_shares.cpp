@@ -155,7 +155,7 @@ void ErodedUnion::Integrator::arc_shares(const Circle& c, double begin, double e
   for (int i = 0; i < 8; ++i) {
     const double w = weight(begin, end, i);
     const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
-    const auto clear_at_r = [&](double psi) { return clear(rows_[i], q + r_ * c.ray(radial, psi), r_, none); };
+    const auto clear_at_r = [&](double psi) { return clear(at_r_[i], q + r_ * c.ray(radial, psi), r_, none); };
     const auto cell_at_r = [&](double psi) { return end_cell(sites, q, c.ray(radial, psi)); };
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
       for (const Segment& g :
