@@ -55,20 +55,21 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
 
   // Arcs: each circle of an edge of K, less the balls of its ring.
   arc_start_.assign(s.num_edges() + 1, 0);
+  std::vector<Arc> set, scratch;
   for (Index e = 0; e < s.num_edges(); ++e) {
     arc_start_[e] = arcs_.size();
     if (r == 0 || !balls.in_dual_complex_edge(e)) continue;
     const auto& v = s.edge(e);
     const Circle c = circle_of(t, v);
     if (c.rho <= tolerance_) continue;  // touching balls: no arc worth a piece
-    std::vector<Arc> set{{0, kTwoPi}};
+    set.assign(1, {0, kTwoPi});
     for (Index f : s.edge_triangles(e)) {
       for (Index k : s.triangle(f)) {
         if (k == v[0] || k == v[1]) continue;
         // On the circle, |x - p_k|^2 >= R_k^2 reads A cos phi + B sin phi <= C.
         const Vec3 g = c.o - t.point(k);
         const double a = -2 * c.rho * dot(g, c.e1), b = -2 * c.rho * dot(g, c.e2);
-        set = where_below(set, a, b, dot(g, g) + c.rho * c.rho - t.weight(k));
+        keep_below(set, a, b, dot(g, g) + c.rho * c.rho - t.weight(k), scratch);
         if (set.empty()) break;
       }
       if (set.empty()) break;

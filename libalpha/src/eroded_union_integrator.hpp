@@ -124,10 +124,13 @@ inline double weight(double a, double b, int k) { return (b - a) / 2 * kWeight[k
 
 inline bool full(const Arc& a) { return a.length >= kTwoPi; }
 
-// The parts of `set` inside `a`.
-inline std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
-  if (full(a)) return {set.begin(), set.end()};
-  std::vector<Arc> out;
+// Into out, the parts of `set` inside `a` (out is not set).
+inline void clip(std::span<const Arc> set, const Arc& a, std::vector<Arc>& out) {
+  out.clear();
+  if (full(a)) {
+    out.assign(set.begin(), set.end());
+    return;
+  }
   for (const Arc& x : set) {
     if (full(x)) {
       out.push_back(a);
@@ -139,17 +142,21 @@ inline std::vector<Arc> clip(std::span<const Arc> set, const Arc& a) {
       if (hi > lo) out.push_back({wrap(a.begin + lo), hi - lo});
     }
   }
-  return out;
 }
 
-// The parts of `set` where a cos phi + b sin phi <= c.
-inline std::vector<Arc> where_below(const std::vector<Arc>& set, double a, double b, double c) {
+// Keeps the parts of `set` where a cos phi + b sin phi <= c (`scratch`:
+// space for the clipping, kept by the caller: no allocation per call).
+inline void keep_below(std::vector<Arc>& set, double a, double b, double c, std::vector<Arc>& scratch) {
   const double m = std::hypot(a, b);
-  if (c >= m) return set;
-  if (c <= -m) return {};
+  if (c >= m) return;
+  if (c <= -m) {
+    set.clear();
+    return;
+  }
   // cos(phi - phi0) <= c / m: phi at least delta from phi0.
   const double delta = std::atan2(std::sqrt((m - c) * (m + c)), c);
-  return clip(set, {wrap(std::atan2(b, a) + delta), kTwoPi - 2 * delta});
+  clip(set, {wrap(std::atan2(b, a) + delta), kTwoPi - 2 * delta}, scratch);
+  set.swap(scratch);
 }
 
 
@@ -372,7 +379,8 @@ public:
   // per_ball: also each piece split by power cell (see add_scaled).
   LayerShare arcs(Index e, const Circle& c, const Arc& sector, std::vector<LayerShare>* per_ball = nullptr) const {
     LayerShare out;
-    const std::vector<Arc> pieces = clip(edge_arcs(e), sector);
+    std::vector<Arc> pieces;
+    clip(edge_arcs(e), sector, pieces);
     const std::vector<Site> sites = per_ball ? sites_near(s_.edge(e)) : std::vector<Site>{};
     for (const Arc& piece : pieces) {
       const int parts = int(std::ceil(piece.length / kMaxPiece));
@@ -552,7 +560,8 @@ private:
     if (set.size() != 1 || set[0].length > kPi) return {c.o, c.rho};
     const ArcEnds& a = eu_.arc_ends_[eu_.arc_start_[e]];
     const double x = a.cos_begin + a.cos_end, y = a.sin_begin + a.sin_end;
-    return {c.o + (c.rho / 2) * (x * c.e1 + y * c.e2), c.rho / 2 * std::hypot(a.cos_end - a.cos_begin, a.sin_end - a.sin_begin)};
+    const double dx = a.cos_end - a.cos_begin, dy = a.sin_end - a.sin_begin;
+    return {c.o + (c.rho / 2) * (x * c.e1 + y * c.e2), c.rho / 2 * std::sqrt(dx * dx + dy * dy)};
   }
 
   // Whether clear() can find circle c (of edge e) at a point within
@@ -622,11 +631,15 @@ private:
     out.last = {};
     for (const Hood::Ball& b : h.balls)
       if (ball_near(b, x, reach)) out.balls.push_back(b);
-    for (std::size_t k = 0; k < h.circles.size(); ++k)
+    for (std::size_t k = 0; k < h.circles.size(); ++k) {
+      // clear() finds a circle through a point of its arcs (see clear).
+      const auto& [m, b] = h.arc_bounds[k];
+      if (dot(x - m, x - m) >= (radius + b + tol_) * (radius + b + tol_)) continue;
       if (circle_near(h.circles[k].first, h.circles[k].second, x, radius)) {
         out.circles.push_back(h.circles[k]);
         out.arc_bounds.push_back(h.arc_bounds[k]);
       }
+    }
     for (const std::size_t v : h.vertices)
       if (norm(eu_.vertices_[v].p - x) < radius) out.vertices.push_back(v);
   }

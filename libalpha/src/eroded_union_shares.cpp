@@ -254,9 +254,9 @@ void ErodedUnion::Integrator::shell_shares(Index i, std::vector<LayerShare>& per
     // The angle phi of the circle z (of n) where they hold.
     const auto length = [&](const std::vector<std::pair<Vec3, double>>& gh, double z) {
       const double rz = std::sqrt(std::max(0.0, (1 - z) * (1 + z)));
-      std::vector<Arc> set{{0, kTwoPi}};
+      std::vector<Arc> set{{0, kTwoPi}}, scratch;
       for (const auto& [g, h] : gh) {
-        set = where_below(set, rz * dot(g, frame.e1), rz * dot(g, frame.e2), h - z * dot(g, frame.w));
+        keep_below(set, rz * dot(g, frame.e1), rz * dot(g, frame.e2), h - z * dot(g, frame.w), scratch);
         if (set.empty()) break;
       }
       return total_length(set);
