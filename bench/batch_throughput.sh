@@ -35,23 +35,13 @@ reps=${REPS:-3}
 cache=${CACHE:-$HOME/.cache/alphapocket-bench}
 peers=$shared/peers
 
-for tool in parallel make g++; do
-  command -v $tool >/dev/null || { echo "$tool not found" >&2; exit 1; }
-done
+command -v parallel >/dev/null || { echo "parallel not found" >&2; exit 1; }
 [[ -x /usr/bin/time ]] || { echo "/usr/bin/time not found (Debian: apt-get install time)" >&2; exit 1; }
 [[ -x $exe ]] || { echo "$exe: not an executable (build alphapocket first)" >&2; exit 1; }
 
 # fpocket 4.0 as ../shared/peers/README.md builds it, once per cache.
-fpocket=$cache/fpocket-4.0/bin/fpocket
-if [[ ! -x $fpocket ]]; then
-  echo "building fpocket 4.0 into $cache ..." >&2
-  mkdir -p "$cache"
-  rm -rf "$cache/fpocket-4.0"
-  tar xzf "$peers/fpocket-4.0-src.tar.gz" -C "$cache"
-  (cd "$cache/fpocket-4.0" && sed -i 's/ -pg//g' makefile &&
-     make CXX=g++ QCFLAGS="-O2 -ansi -Isrc/qhull/src" >build.log 2>&1) ||
-    { echo "fpocket build failed: $cache/fpocket-4.0/build.log" >&2; exit 1; }
-fi
+source "$root/bench/fpocket.sh"
+fpocket=$(fpocket_binary "$cache" "$peers")
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
