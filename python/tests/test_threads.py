@@ -57,7 +57,9 @@ def longest_pause(call):
 
 
 def test_long_calls_let_other_threads_run():
-    points = np.random.default_rng(0).normal(size=(12000, 3))
+    # Enough points for every call to take well over 0.1 s on a fast machine
+    # (the spectrum's exact rounding got 10 times cheaper: 0.08 s at 12,000).
+    points = np.random.default_rng(0).normal(size=(60000, 3))
     complex_ = alphapocket.AlphaComplex(points)
     calls = {"analyze": lambda: alphapocket.analyze(PDB, tunnels_from="none"),
              "surface": lambda: alphapocket.surface(PDB),
