@@ -116,7 +116,7 @@ TEST_CASE("ligandability: alphapocket's features of a pockets-dev structure are 
       CHECK(std::fabs(c.ligandability - r.margin) <= 1e-6);
       CHECK(std::fabs(c.probability - r.probability) <= 1e-6);
     }
-    CHECK(seen == search.cavities.sites.size());
+    CHECK(seen == molecule::site_candidates(search.cavities).size());
   }
 }
 

@@ -328,15 +328,17 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
   CHECK(std::count(sites.begin(), sites.end(), 0) > long(sites.size() / 2));  // grey elsewhere
 }
 
-TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other voids", "[pocket_outputs]") {
+TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other pockets and voids", "[pocket_outputs]") {
   molecule::Cavities cav;
-  cav.pockets.resize(2);
+  cav.pockets.resize(3);
   cav.voids.resize(3);
-  cav.sites = {{false, 0}, {true, 1}, {false, 1}};  // void 2 is the second site; voids 1 and 3 are no sites
+  // Void 2 is the second site; pocket 3 (of a low probability) and voids 1
+  // and 3 are no sites.
+  cav.sites = {{false, 0}, {true, 1}, {false, 1}};
   const molecule::CavityColors colors = molecule::cavity_colors(cav);
   using molecule::rank_color;
-  CHECK(colors.pockets == std::vector<molecule::Rgb>{rank_color(1), rank_color(3)});
-  CHECK(colors.voids == std::vector<molecule::Rgb>{rank_color(4), rank_color(2), rank_color(5)});
+  CHECK(colors.pockets == std::vector<molecule::Rgb>{rank_color(1), rank_color(3), rank_color(4)});
+  CHECK(colors.voids == std::vector<molecule::Rgb>{rank_color(5), rank_color(2), rank_color(6)});
   // No colour repeats (a cycle of 12 made site 13 red like site 1), nor
   // is the molecule's, the tunnels' or the ligands'.
   std::set<std::tuple<int, int, int>> seen;

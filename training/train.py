@@ -32,6 +32,8 @@ from sklearn.model_selection import GroupKFold
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HIT = 4.0    # A, DCC and DCA
 MERGE = 1.7  # A, residues of one ligand
+SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void that can be a site
+MIN_SITE_PROBABILITY = 0.03   # molecule::kMinSiteProbability: candidates below it are no sites
 LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
 TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
 
@@ -82,8 +84,7 @@ def read_ligands(path, codes):
 
 
 def run_alphapocket(exe, dataset, work, extra):
-    """Features of every cavity of every structure: list of (name, header, rows, ligands). The sites are
-    ranked geometrically: site_rank is the geometric order (the baseline, and the order of ties). The
+    """Features of every cavity of every structure: list of (name, header, rows, ligands). The
     meshes are no features: a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take no time."""
     entries = read_ds(dataset)
     os.makedirs(work, exist_ok=True)
@@ -105,12 +106,14 @@ def run_alphapocket(exe, dataset, work, extra):
 
 
 def table(structures):
-    """Feature matrix, labels and bookkeeping of all cavities of all structures; cpp: alphapocket's
-    margin and probability of each."""
+    """Feature matrix, labels and bookkeeping of all cavities of all structures; candidate: whether a
+    cavity can be a site (molecule::site_candidates: a pocket, or a void of at least SITE_VOLUME; which
+    of them alphapocket leaves out depends on the model, so they are all fitted and ranked); cpp:
+    alphapocket's margin and probability of each."""
     header = structures[0][1]
     assert header[:len(LEADING)] == LEADING and header[-len(TRAILING):] == TRAILING, header
     names = header[len(LEADING):-len(TRAILING)]
-    X, dca, dcc, group, site_rank, centers, ids, cpp = [], [], [], [], [], [], [], []
+    X, dca, dcc, group, centers, ids, cpp = [], [], [], [], [], [], []
     for g, (name, h, rows, ligands) in enumerate(structures):
         assert h == header, name
         for r in rows:
@@ -120,20 +123,22 @@ def table(structures):
             dca.append(any(np.linalg.norm(l - c, axis=1).min() <= HIT for l in ligands))
             dcc.append(any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for l in ligands))
             group.append(g)
-            site_rank.append(int(r[2]))
             centers.append(c)
             ids.append([name, r[0], r[1]])
-    return (names, np.array(X), np.array(dca, int), np.array(dcc, int), np.array(group), np.array(site_rank),
+    X = np.array(X)
+    candidate = (X[:, names.index("is_void")] == 0) | (X[:, names.index("sa_volume")] >= SITE_VOLUME)
+    return (names, X, np.array(dca, int), np.array(dcc, int), np.array(group), candidate,
             np.array(centers), ids, np.array(cpp))
 
 
-def figures(structures, group, site_rank, centers, key):
-    """DCC and DCA at top-1 and top-3 of the sites ranked by `key` (larger first; ties: given order)."""
+def figures(structures, group, sites, log_score, centers, key):
+    """DCC and DCA at top-1 and top-3 of the sites (a mask) ranked by `key` (larger first; ties: the
+    geometric order, by log_score, then pockets before voids, each in its order: the rows' order)."""
     hits = {"dcc": [0, 0], "dca": [0, 0]}
     total = 0
     for g, (name, _, _, ligands) in enumerate(structures):
-        idx = np.where((group == g) & (site_rank > 0))[0]
-        idx = idx[np.argsort(site_rank[idx], kind="stable")]         # given order first
+        idx = np.where((group == g) & sites)[0]
+        idx = idx[np.argsort(-log_score[idx], kind="stable")]         # geometric order first
         idx = idx[np.argsort(-key[idx], kind="stable")]
         total += len(ligands)
         for l in ligands:
@@ -239,15 +244,15 @@ def main():
 
     train = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-train"), os.path.join(a.work, "train"), [])
     dev = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-dev"), os.path.join(a.work, "dev"), [])
-    names, X, dca, dcc, group, site_rank, centers, _, _ = table(train)
-    dnames, dX, ddca, ddcc, dgroup, dsite_rank, dcenters, dids, dcpp = table(dev)
+    names, X, dca, dcc, group, candidate, centers, _, _ = table(train)
+    dnames, dX, ddca, ddcc, dgroup, dcandidate, dcenters, dids, dcpp = table(dev)
     y = {"dca": dca, "dcc": dcc, "both": dca & dcc}[a.label]
     dropped = [n for n in a.drop.split(",") if n]
     keep = [i for i, n in enumerate(names) if n not in dropped]
     # Left-out features are kept as columns the trees never split on (the C++ side computes all).
     Xfit = X.copy()
     Xfit[:, [i for i in range(len(names)) if i not in keep]] = 0
-    fit_rows = np.ones(len(y), bool) if a.all_cavities else site_rank > 0
+    fit_rows = np.ones(len(y), bool) if a.all_cavities else candidate
 
     # Grouped cross-validation on pockets-train: out-of-fold margins.
     folds = list(GroupKFold(5).split(Xfit, y, group))
@@ -266,26 +271,31 @@ def main():
     dm = margin(model, dXfit)
     dp = iso.predict(dm)
 
-    geometric = -site_rank.astype(float)
-    cv, n_train = figures(train, group, site_rank, centers, oof)
-    cv_geo, _ = figures(train, group, site_rank, centers, geometric)
-    dv, n_dev = figures(dev, dgroup, dsite_rank, dcenters, dm)
-    dv_geo, _ = figures(dev, dgroup, dsite_rank, dcenters, -dsite_rank.astype(float))
+    # The sites: the candidates alphapocket keeps (out of fold on pockets-train).
+    sites, dsites = candidate & (oof_p >= MIN_SITE_PROBABILITY), dcandidate & (dp >= MIN_SITE_PROBABILITY)
+    log_score, dlog_score = X[:, names.index("log_score")], dX[:, names.index("log_score")]
+    cv, n_train = figures(train, group, sites, log_score, centers, oof)
+    cv_geo, _ = figures(train, group, sites, log_score, centers, log_score)
+    dv, n_dev = figures(dev, dgroup, dsites, dlog_score, dcenters, dm)
+    dv_geo, _ = figures(dev, dgroup, dsites, dlog_score, dcenters, dlog_score)
     fmt = lambda f: f"DCC {f['dcc'][0]:.3f} / {f['dcc'][1]:.3f}  DCA {f['dca'][0]:.3f} / {f['dca'][1]:.3f}"
-    for label, structures, g_, s_, c_ in (("pockets-train", train, group, site_rank, centers),
-                                         ("pockets-dev", dev, dgroup, dsite_rank, dcenters)):
-        missed = sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & (s_ > 0)])
-                     for g, (_, _, _, ligands) in enumerate(structures) for l in ligands)
-        print(f"{label}: {missed} ligands have no site centre within {HIT} A of an atom (no ranking reaches them)")
+    for label, structures, g_, cand, s_, c_ in (("pockets-train", train, group, candidate, sites, centers),
+                                               ("pockets-dev", dev, dgroup, dcandidate, dsites, dcenters)):
+        missed = [sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & m])
+                      for g, (_, _, _, ligands) in enumerate(structures) for l in ligands) for m in (cand, s_)]
+        counts = [((g_ == g) & m).sum() for m in (cand, s_) for g in range(len(structures))]
+        print(f"{label}: {missed[0]} ligands have no candidate centre within {HIT} A of an atom, {missed[1]} no site "
+              f"centre (no ranking reaches them); median candidates {np.median(counts[:len(structures)]):g}, "
+              f"sites {np.median(counts[len(structures):]):g} per structure")
     print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
           f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive)")
     print(f"pockets-train CV ({n_train} ligands): {fmt(cv)}   geometric: {fmt(cv_geo)}")
     print(f"pockets-dev     ({n_dev} ligands): {fmt(dv)}   geometric: {fmt(dv_geo)}")
-    s = site_rank > 0
+    s = candidate
     print(f"Brier (sites, out-of-fold, cross-fitted calibration): {np.mean((oof_p[s] - y[s]) ** 2):.4f}, "
           f"base rate {y[s].mean():.3f}")
     print("reliability, pockets-train sites out-of-fold:\n" + reliability(oof_p[s], y[s]))
-    ds_ = dsite_rank > 0
+    ds_ = dcandidate
     dy = {"dca": ddca, "dcc": ddcc, "both": ddca & ddcc}[a.label]
     print("reliability, pockets-dev sites:\n" + reliability(dp[ds_], dy[ds_]))
     imp = sorted(zip(model.feature_importances_, names), reverse=True)[:12]

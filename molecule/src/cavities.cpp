@@ -309,10 +309,7 @@ private:
 
 // Cavities::sites, from the ranked pockets and voids.
 std::vector<Site> rank_sites(const Cavities& cavities) {
-  std::vector<Site> sites;
-  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});
-  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i});
+  std::vector<Site> sites = site_candidates(cavities);
   std::stable_sort(sites.begin(), sites.end(), [&](const Site& a, const Site& b) {
     return cavities.cavity(a).score > cavities.cavity(b).score;
   });
@@ -320,6 +317,14 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
 }
 
 }  // namespace
+
+std::vector<Site> site_candidates(const Cavities& cavities) {
+  std::vector<Site> sites;
+  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i});
+  return sites;
+}
 
 std::string site_cavity_name(const Site& site) {
   return (site.is_void ? "void " : "pocket ") + std::to_string(site.index + 1);

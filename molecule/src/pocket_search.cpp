@@ -43,6 +43,7 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
       c.ligandability = model.margin(features(c));
       c.probability = model.probability(c.ligandability);
     }
+  std::erase_if(cav.sites, [&](const Site& s) { return !(cav.cavity(s).probability >= kMinSiteProbability); });
   if (ranking == SiteRanking::probability)
     std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
       return cav.cavity(a).ligandability > cav.cavity(b).ligandability;

@@ -121,12 +121,15 @@ SiteFeatures::SiteFeatures(const Structure& structure, const Cavities& cavities)
     b_zscore_.push_back(var > 1e-12 * std::max(1.0, mean * mean) ? (a.b_factor - mean) / std::sqrt(var) : 0.0);
   }
 
+  // The context: all candidate sites, whichever search_pockets leaves out
+  // after the model has seen them.
   best_log_score_ = -std::numeric_limits<double>::infinity();
-  for (const Site& s : cavities.sites) {
+  for (const Site& s : site_candidates(cavities)) {
+    candidate_scores_.push_back(cavities.cavity(s).score);
     best_log_score_ = std::max(best_log_score_, log_score(cavities.cavity(s).score));
     best_burial_ = std::max(best_burial_, double(cavities.cavity(s).burial_atoms));
   }
-  if (cavities.sites.empty()) best_log_score_ = 0;
+  if (candidate_scores_.empty()) best_log_score_ = 0;
 }
 
 std::vector<double> SiteFeatures::operator()(const Cavity& c) const {
@@ -156,9 +159,9 @@ std::vector<double> SiteFeatures::operator()(const Cavity& c) const {
   f.push_back(gyration_radius_ > 0 ? norm(c.center - centroid_) / gyration_radius_ : 0);
   const double ls = log_score(c.score);
   std::size_t rank = 1;
-  for (const Site& s : cavities_.sites) rank += cavities_.cavity(s).score > c.score;
+  for (double score : candidate_scores_) rank += score > c.score;
   for (double x : {ls, double(rank), ls - best_log_score_, double(c.burial_atoms) - best_burial_,
-                   double(cavities_.sites.size()), double(atoms.size())})
+                   double(candidate_scores_.size()), double(atoms.size())})
     f.push_back(x);
 
   // The lining's chemistry.

@@ -67,14 +67,15 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
       s.cast = cavity_mesh_path(is_void ? "void" : "pocket", index + 1, run.mesh_format);
     scene.cavities.push_back(std::move(s));
   };
-  std::vector<bool> void_is_site(cavities.voids.size(), false);
-  std::size_t rank = 0;
-  for (const Site& site : cavities.sites) {
-    add(site.is_void, site.index, ++rank);
-    if (site.is_void) void_is_site.at(site.index) = true;
+  // In colour-rank order: the sites, then the pockets and voids that are no site.
+  const CavityRanks ranks = cavity_ranks(cavities);
+  std::vector<std::pair<bool, std::size_t>> order(ranks.pockets.size() + ranks.voids.size());
+  for (const bool is_void : {false, true}) {
+    const std::vector<std::size_t>& list = is_void ? ranks.voids : ranks.pockets;
+    for (std::size_t i = 0; i < list.size(); ++i) order.at(list[i] - 1) = {is_void, i};
   }
-  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    if (!void_is_site[i]) add(true, i, 0);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    add(order[k].first, order[k].second, k < cavities.sites.size() ? k + 1 : 0);
   for (std::size_t i = 0; i < cavities.tunnels.size(); ++i) {
     const Tunnel& t = cavities.tunnels[i];
     scene.tunnels.push_back({"tunnel_" + std::to_string(i + 1), ids_of(t.lining_atoms),

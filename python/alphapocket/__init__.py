@@ -28,7 +28,7 @@ __all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", 
            "LimitExceededError", "MisuseError", "__version__"]
 
 # The defaults of `alphapocket pockets`.
-_ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=4.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
+_ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=1.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
                          keep_hetero=False, keep_cofactors=False, min_plddt=0.0, radii="", tunnels_from="auto",
                          tunnel_probe=0.9,
                          pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels",
@@ -167,7 +167,7 @@ def _core_arrays(arrays):
 
 def analyze(structure=None, **options):
     """Pockets, voids, sites and tunnels of a structure (see the module doc);
-    options as `alphapocket pockets` names them: probe=1.4, min_volume=4,
+    options as `alphapocket pockets` names them: probe=1.4, min_volume=1,
     model, chains=[...], keep_hydrogens, keep_waters, keep_hetero (True, or
     residue codes: "ZN,HEM" or ["ZN", "HEM"]), keep_cofactors, min_plddt,
     radii (a radius file), tunnels_from="auto", tunnel_probe=0.9, pores,

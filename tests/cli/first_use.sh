@@ -40,7 +40,7 @@ case "$case_name" in
     expect_success
     grep -q '^Usage: pockets \[OPTIONS\] FILE' "$tmp/out" || fail "not the help of pockets"
     grep -q 'Exit codes: 0 success; 1 ' "$tmp/out" || fail "no exit codes"
-    grep -qE -- '--min-volume V=4 ' "$tmp/out" || fail "no plain default for --min-volume"
+    grep -qE -- '--min-volume V=1 ' "$tmp/out" || fail "no plain default for --min-volume"
     ! grep -qE 'FLOAT:|NUMBER|in \[' "$tmp/out" || fail "raw type strings in the help"
     run help
     expect_success

@@ -35,11 +35,13 @@
 // Too small to hold the probe: sa_volume is the space the probe's centre
 // can reach in the cavity (points farther than r_i + probe from every atom
 // centre). Cavities whose sa_volume is below CavityOptions::min_volume are
-// dropped (default 4 A^3, a ball of radius 1 A: in less the probe cannot
-// move an Angstrom every way, a dent rather than a cavity; on pockets-dev
-// any value from 3 to 6 A^3 finds the same ligand sites, and 4 leaves a
-// median of 7 pockets per structure where 1 leaves 13). With
-// min_volume = 0 the voids are exactly the b2 classes at alpha_sq = 0.
+// dropped (default 1 A^3: in less the probe's centre cannot move half an
+// Angstrom every way). The small dents are kept as candidate sites for the
+// ligandability model to rank: on pockets-train, a ligand often lies over
+// one (1 instead of 4 A^3 puts a site centre within 4 A of 7 more of its
+// 225 ligands, 173 to 180), and the model gives most of them a low
+// probability; search_pockets leaves such sites out (kMinSiteProbability).
+// With min_volume = 0 the voids are exactly the b2 classes at alpha_sq = 0.
 //
 // All values here are in Angstrom (lengths), Angstrom^2 and Angstrom^3, or
 // squared Angstrom for alpha_sq values (as everywhere in alphapocket).
@@ -168,7 +170,9 @@ struct Cavities {
   // an enclosed cavity must hold the whole ligand, and smaller voids are
   // packing defects and water sites. Holo structures often close a lid over
   // their ligand, so a site can be a void once the ligand is removed.
-  std::vector<Site> sites;  // (search_pockets may rank them by probability instead)
+  // (search_pockets leaves out the sites of a low probability and may rank
+  // the others by probability instead.)
+  std::vector<Site> sites;
 
   const Cavity& cavity(const Site& site) const { return (site.is_void ? voids : pockets).at(site.index); }
 };
@@ -179,9 +183,14 @@ struct Cavities {
 // volume cap, the size rule's default and the smallest void that is a site.
 inline constexpr double kLigandSiteVolume = 150;
 
+// The cavities that can be sites (Cavities::sites before any is left
+// out): every pocket, then every void of at least kLigandSiteVolume, each
+// list in its order.
+std::vector<Site> site_candidates(const Cavities& cavities);
+
 struct CavityOptions {
   double probe = 1.4;       // A; the complex must be built with radii r_i + probe
-  double min_volume = 4;    // A^3; pockets and voids with sa_volume below it are dropped
+  double min_volume = 1;    // A^3; pockets and voids with sa_volume below it are dropped
   // A (orthosphere radius): a region's basins stay separate pockets when
   // their widest sphere's radius exceeds the passage's by this much
   // (infinity, with an infinite split_volume: CASTp's whole pockets).

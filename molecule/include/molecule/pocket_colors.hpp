@@ -73,21 +73,18 @@ inline Rgb rank_color(std::size_t rank) {
 }
 
 // The colour rank of each pocket and void (indices as in Cavities): its
-// site rank, then, for the voids that are not sites, the ranks that
-// follow, in their list's order.
+// site rank, then, for the pockets and then the voids that are not sites,
+// the ranks that follow, in their lists' order.
 struct CavityRanks {
   std::vector<std::size_t> pockets, voids;
 };
 inline CavityRanks cavity_ranks(const Cavities& cavities) {
   CavityRanks out{std::vector<std::size_t>(cavities.pockets.size()), std::vector<std::size_t>(cavities.voids.size())};
-  std::vector<bool> void_is_site(cavities.voids.size(), false);
   std::size_t rank = 0;
-  for (const Site& s : cavities.sites) {
-    (s.is_void ? out.voids : out.pockets).at(s.index) = ++rank;
-    if (s.is_void) void_is_site[s.index] = true;
-  }
-  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    if (!void_is_site[i]) out.voids[i] = ++rank;
+  for (const Site& s : cavities.sites) (s.is_void ? out.voids : out.pockets).at(s.index) = ++rank;
+  for (std::vector<std::size_t>* list : {&out.pockets, &out.voids})
+    for (std::size_t& r : *list)
+      if (r == 0) r = ++rank;
   return out;
 }
 

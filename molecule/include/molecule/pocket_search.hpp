@@ -32,9 +32,14 @@ struct PocketSearch {
   double ranking_seconds = 0;  // site features and ligandability model
 };
 
+// The probability below which a candidate is no site: on pockets-train
+// (cross-validated), 0.03 leaves a median of 7 sites per structure of 16
+// candidates and loses no ligand from the top 3.
+inline constexpr double kMinSiteProbability = 0.03;
+
 // Every pocket and void gets its ligandability and probability from the
-// default model (molecule/ligandability_model.hpp); the sites are then
-// ordered as `ranking` says. Throws alpha::Error for unusable input (e.g.
+// default model (molecule/ligandability_model.hpp); the sites below
+// kMinSiteProbability are left out and the others ordered as `ranking` says. Throws alpha::Error for unusable input (e.g.
 // all atoms in one plane) or options (negative probe).
 PocketSearch search_pockets(const Structure& structure, const CavityOptions& options,
                             SiteRanking ranking = SiteRanking::probability);

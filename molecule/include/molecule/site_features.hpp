@@ -14,7 +14,7 @@
 // Context within the structure (the model compares sites across
 // structures, where only relative values carry over): the log score and
 // the 14 A burial count minus the best among the structure's sites, the
-// number of sites and of atoms.
+// number of candidate sites (site_candidates) and of atoms.
 // Chemistry of the lining atoms: fractions of C, N, O, S, of backbone,
 // aromatic-ring, H-bond donor and acceptor, positively and negatively
 // charged atoms (by residue and atom name, standard amino acids); of the
@@ -50,6 +50,7 @@ private:
   alpha::Vec3 centroid_{};
   double gyration_radius_ = 0;
   std::vector<double> b_zscore_;  // per atom
+  std::vector<double> candidate_scores_;  // of site_candidates(cavities)
   double best_log_score_ = 0, best_burial_ = 0;
 };
 

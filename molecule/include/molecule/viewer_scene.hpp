@@ -25,7 +25,7 @@ inline constexpr std::size_t kShownSites = 12;
 
 struct SceneCavity {
   std::string name;            // "pocket_3", "void_1"
-  std::size_t site_rank = 0;   // its rank among the binding sites; 0: not a site (a small void)
+  std::size_t site_rank = 0;   // its rank among the binding sites; 0: not a site (a small void, an unlikely pocket)
   Rgb color;                   // cavity_colors
   bool shown = false;          // a site of rank <= kShownSites
   std::vector<std::size_t> lining_ids;  // atom ids in structure.cif
@@ -51,7 +51,7 @@ struct ScenePath {
 
 struct ViewerScene {
   std::string object;  // the structure's object name, from the file name
-  std::vector<SceneCavity> cavities;  // in site order, then the voids that are no site
+  std::vector<SceneCavity> cavities;  // in site order, then the pockets and voids that are no site
   std::vector<std::size_t> ligand_ids;
   std::vector<SceneTunnel> tunnels;  // the cycles (report.json tunnels of kind "cycle")
   std::vector<ScenePath> paths;      // the tunnels and pores that follow them
