@@ -192,19 +192,21 @@ LayerShare ErodedUnion::share(const Integrator& in, Index c) const {
 
 namespace alpha {
 
-ErodedUnion::Nearby::Nearby(const ErodedUnion& eu, std::unique_ptr<Hood> hood) : eu_(&eu), hood_(std::move(hood)) {}
+ErodedUnion::Nearby::Nearby(std::unique_ptr<const Integrator> in, std::unique_ptr<Hood> hood)
+    : in_(std::move(in)), hood_(std::move(hood)) {}
 ErodedUnion::Nearby::Nearby(Nearby&&) noexcept = default;
 ErodedUnion::Nearby& ErodedUnion::Nearby::operator=(Nearby&&) noexcept = default;
 ErodedUnion::Nearby::~Nearby() = default;
 
 ErodedUnion::Nearby ErodedUnion::nearby(const Vec3& center, double reach) const {
   auto hood = std::make_unique<Nearby::Hood>();
-  Integrator(*this).gather(center, reach, *hood);
-  return Nearby(*this, std::move(hood));
+  auto in = std::make_unique<const Integrator>(*this);
+  in->gather(center, reach, *hood);
+  return Nearby(std::move(in), std::move(hood));
 }
 
 ErodedUnion::Nearest ErodedUnion::Nearby::nearest(const Vec3& x, double limit) const {
-  return Integrator(*eu_).nearest(*hood_, x, limit);
+  return in_->nearest(*hood_, x, limit);
 }
 
 double ErodedUnion::Nearby::outside_by(const Vec3& x) const {

@@ -52,7 +52,7 @@ std::array<std::array<int, 4>, 12> even_permutations() {
 }  // namespace
 
 SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& inside,
-                    const std::function<Vec3(std::size_t, std::size_t)>& vertex) {
+                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex) {
   const auto& size = lattice.size;
   if (inside.size() != lattice.num_nodes()) fail("contour: one flag per lattice node expected");
   for (std::size_t n = 0; n < inside.size(); ++n) {
@@ -67,19 +67,20 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
   SurfaceMesh mesh;
   // Edge (lower node, direction 1..7 as dx + 2 dy + 4 dz) -> its vertex.
   std::unordered_map<std::uint64_t, Index> edge_vertex;
+  std::size_t o = 0;  // the cube being cut
   const auto point = [&](std::size_t a, std::size_t b) {  // a inside, b outside
     const std::size_t lo = std::min(a, b), hi = std::max(a, b);
     const std::size_t di = hi % size[0] - lo % size[0], dj = hi / size[0] % size[1] - lo / size[0] % size[1];
     const std::size_t dk = hi / (size[0] * size[1]) - lo / (size[0] * size[1]);
     const std::uint64_t key = std::uint64_t(lo) * 8 + (di + 2 * dj + 4 * dk);
     const auto [it, added] = edge_vertex.try_emplace(key, Index(mesh.points.size()));
-    if (added) mesh.points.push_back(vertex(a, b));
+    if (added) mesh.points.push_back(vertex(a, b, o));
     return it->second;
   };
   const std::size_t dj = size[0], dk = size[0] * size[1];
   const auto cube = [&](std::size_t i, std::size_t j, std::size_t k) {
     // Most cubes have all corners alike (no surface): told by 8 reads.
-    const std::size_t o = lattice.index(i, j, k);
+    o = lattice.index(i, j, k);
     const std::uint8_t first = inside[o];
     if (inside[o + 1] == first && inside[o + dj] == first && inside[o + dj + 1] == first && inside[o + dk] == first &&
         inside[o + dk + 1] == first && inside[o + dk + dj] == first && inside[o + dk + dj + 1] == first)

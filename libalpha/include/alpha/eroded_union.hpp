@@ -135,6 +135,10 @@ public:
     Index which = kNone;  // the ball (sphere), the edge (circle) or the boundary vertex (vertex)
   };
 
+private:
+  class Integrator;  // eroded_union_integrator.hpp
+
+public:
   // Nearest-point queries about the points near `center`, with the
   // boundary's pieces that can be within r of a point within `reach` of
   // it gathered once: nearest(x, limit) needs |x - center| + limit - r <= reach.
@@ -153,8 +157,10 @@ public:
 
   private:
     friend class ErodedUnion;
-    Nearby(const ErodedUnion& eu, std::unique_ptr<Hood> hood);
-    const ErodedUnion* eu_;
+    Nearby(std::unique_ptr<const Integrator> in, std::unique_ptr<Hood> hood);
+    // Made once per Nearby, not per query (it holds scratch space for
+    // integrals that nearest() does not use).
+    std::unique_ptr<const Integrator> in_;
     std::unique_ptr<Hood> hood_;
   };
   Nearby nearby(const Vec3& center, double reach) const;
@@ -186,7 +192,6 @@ public:
   };
 
 private:
-  class Integrator;
   LayerShare share(const Integrator& in, Index c) const;
   LayerShare measure(std::vector<LayerShare>* per_ball) const;
   const UnionOfBalls* balls_;

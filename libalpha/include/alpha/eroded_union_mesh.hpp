@@ -12,7 +12,8 @@
 // union's complement) is at least r, computed from the union's boundary
 // pieces (ErodedUnion::Nearby). Each mesh vertex lies on a lattice edge
 // where that changes, located by root finding on the exact distance to
-// 1e-6 of the spacing: the vertices lie on the exact surface, so area and
+// 1e-4 of the edge (5e-5 A at 0.5 A): the vertices lie on the exact
+// surface up to that, so area and
 // volume converge to the analytic ones as the spacing shrinks (on 1A26
 // chain A at 0.5 A both are within 1%; see README).
 //
@@ -27,7 +28,12 @@
 // closed regions. Its vertices on the molecular surface are found as the
 // surface's are (Newton's method on the distance); the others (mouths,
 // where another cell's share begins) by bisection on that membership, to
-// 1e-6 of the spacing.
+// 1e-4 of the spacing.
+//
+// Cost: blocks of the lattice that the balls alone show to be outside the
+// union or deep in the body (alpha/nearest_ball.hpp) are labelled without
+// gathering the boundary's pieces near them; the others gather them once
+// for their nodes' labels and once for the crossings of their cubes.
 #pragma once
 #include <span>
 #include <vector>

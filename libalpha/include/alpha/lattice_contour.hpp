@@ -51,11 +51,13 @@ struct SurfaceMesh {
 inline constexpr std::size_t kContourBlock = 4;
 
 // The surface around the nodes with inside[n] != 0 (one flag per node,
-// numbered as Lattice::index). vertex(a, b) gives the point on the segment
-// from inside node a to outside node b, strictly between them; it is
-// called once per edge crossed, cube by cube in block order. Throws
-// alpha::Error if inside has the wrong size or a border node is inside.
+// numbered as Lattice::index). vertex(a, b, cube) gives the point on the
+// segment from inside node a to outside node b, strictly between them; it
+// is called once per edge crossed, cube by cube in block order, from the
+// first cube holding the edge (`cube`: its lowest node, so the blocks of
+// nodes and of cubes are numbered alike). Throws alpha::Error if inside has
+// the wrong size or a border node is inside.
 SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& inside,
-                    const std::function<Vec3(std::size_t, std::size_t)>& vertex);
+                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex);
 
 }  // namespace alpha
