@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -297,4 +298,53 @@ TEST_CASE("mesh export: an existing file is replaced whole", "[mesh_export]") {
   molecule::write_mesh_file(file.string(), molecule::TriangleMesh{});
   CHECK(read_text(file).rfind("OFF\n0 0 0\n", 0) == 0);
   CHECK(dir.files() == std::vector<std::string>{"shape.off"});
+}
+
+TEST_CASE("mesh export: PLY is written byte for byte as OpenMesh writes it", "[mesh_export]") {
+  // A closed 2-manifold using every point (an octahedron split at random
+  // heights: no vertex copies), with each optional property on or off.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-100, 100);
+  std::uniform_int_distribution<int> byte(0, 255), site(-3, 70000);
+  molecule::TriangleMesh m;
+  for (int k = 0; k < 6; ++k) m.points.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
+  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  m.manifold = true;
+  const auto rgb = [&] { return molecule::Rgb{std::uint8_t(byte(rng)), std::uint8_t(byte(rng)), std::uint8_t(byte(rng))}; };
+  TempDir dir;
+  for (int options = 0; options < 8; ++options) {
+    CAPTURE(options);
+    molecule::TriangleMesh x = m;
+    if (options & 1) for (std::size_t v = 0; v < 6; ++v) x.vertex_colors.push_back(rgb());
+    if (options & 2) for (std::size_t f = 0; f < 8; ++f) x.face_colors.push_back(rgb());
+    if (options & 4) for (std::size_t v = 0; v < 6; ++v) x.vertex_sites.push_back(site(rng));
+    const fs::path file = dir / ("mesh" + std::to_string(options) + ".ply");
+    molecule::write_mesh_file(file.string(), x);
+
+    OpenMesh::TriMesh_ArrayKernelT<> om;
+    OpenMesh::IO::Options o = OpenMesh::IO::Options::Binary;
+    o += OpenMesh::IO::Options::LSB;
+    if (options & 1) om.request_vertex_colors(), o += OpenMesh::IO::Options::VertexColor;
+    if (options & 2) om.request_face_colors(), o += OpenMesh::IO::Options::FaceColor;
+    OpenMesh::VPropHandleT<int> sites;
+    if (options & 4) {
+      om.add_property(sites, "site");
+      om.property(sites).set_persistent(true);
+      o += OpenMesh::IO::Options::Custom;
+    }
+    std::vector<OpenMesh::VertexHandle> h;
+    for (std::size_t v = 0; v < 6; ++v) {
+      const alpha::Vec3& p = x.points[v];
+      h.push_back(om.add_vertex({float(p.x), float(p.y), float(p.z)}));
+      if (options & 1) om.set_color(h[v], {x.vertex_colors[v].r, x.vertex_colors[v].g, x.vertex_colors[v].b});
+      if (options & 4) om.property(sites, h[v]) = x.vertex_sites[v];
+    }
+    for (std::size_t f = 0; f < 8; ++f) {
+      const auto fh = om.add_face(h[x.triangles[f][0]], h[x.triangles[f][1]], h[x.triangles[f][2]]);
+      if (options & 2) om.set_color(fh, {x.face_colors[f].r, x.face_colors[f].g, x.face_colors[f].b});
+    }
+    std::ostringstream expected(std::ios::binary);
+    REQUIRE(OpenMesh::IO::write_mesh(om, expected, ".ply", o));
+    CHECK(read_text(file) == expected.str());
+  }
 }

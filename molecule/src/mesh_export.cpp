@@ -2,6 +2,7 @@
 #include "molecule/mesh_export.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cctype>
 #include <filesystem>
@@ -355,6 +356,55 @@ std::string obj_with_materials(const TriangleMesh& in, const std::string& mtl_na
   return std::move(out).str();
 }
 
+// Binary little-endian PLY, written here: the same bytes as OpenMesh's
+// writer (tested), which builds a halfedge mesh and writes value by value
+// through a stream, about 20 times the time (a fifth of a `pockets` run's).
+// One vertex per fan, as build_mesh has them.
+std::string binary_ply(const TriangleMesh& in, bool vertex_colors, bool face_colors, bool sites, MeshFileInfo& info) {
+  std::size_t copies = 0;
+  const std::vector<std::size_t> copy = corner_copies(in, copies);
+  std::vector<alpha::Index> point_of(copies);
+  for (std::size_t c = 0; c < copy.size(); ++c) point_of[copy[c]] = in.triangles[c / 3][c % 3];
+  std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(copies) +
+                       "\nproperty float x\nproperty float y\nproperty float z\n";
+  const char* rgb = "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (vertex_colors) header += rgb;
+  if (sites) header += "property int site\n";
+  header += "element face " + std::to_string(in.triangles.size()) + "\nproperty list uchar int vertex_indices\n";
+  if (face_colors) header += rgb;
+  header += "end_header\n";
+  const std::size_t vertex_bytes = 12 + (vertex_colors ? 3 : 0) + (sites ? 4 : 0), face_bytes = 13 + (face_colors ? 3 : 0);
+  std::string out(header.size() + copies * vertex_bytes + in.triangles.size() * face_bytes, '\0');
+  std::copy(header.begin(), header.end(), out.begin());
+  char* at = out.data() + header.size();
+  const auto u32 = [&](std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) *at++ = char(v >> (8 * k) & 0xff);
+  };
+  const auto color = [&](const Rgb& c) {
+    *at++ = char(c.r);
+    *at++ = char(c.g);
+    *at++ = char(c.b);
+  };
+  for (const alpha::Index v : point_of) {
+    const alpha::Vec3& p = in.points[v];
+    for (const double x : {p.x, p.y, p.z}) u32(std::bit_cast<std::uint32_t>(float(x)));
+    if (vertex_colors) color(in.vertex_colors[v]);
+    if (sites) u32(std::uint32_t(in.vertex_sites[v]));
+  }
+  for (std::size_t f = 0; f < in.triangles.size(); ++f) {
+    *at++ = 3;
+    for (int k = 0; k < 3; ++k) u32(std::uint32_t(copy[3 * f + k]));
+    if (face_colors) color(in.face_colors[f]);
+  }
+  std::vector<char> used(in.points.size(), 0);
+  for (const alpha::Index v : point_of) used[v] = 1;
+  info.vertices = copies;
+  info.duplicated_vertices = copies - std::size_t(std::count(used.begin(), used.end(), 1));
+  info.faces = in.triangles.size();
+  info.colors = vertex_colors || face_colors;
+  return out;
+}
+
 }  // namespace
 
 void check_mesh_file_name(const std::string& path) {
@@ -374,6 +424,10 @@ MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& m
     info.colors = !mesh.face_colors.empty();
     if (info.colors) file.companion_path = fs::path(path).replace_extension(".mtl").string();
     file.bytes = obj_with_materials(mesh, fs::path(file.companion_path).filename().string(), file.companion, info);
+    return file;
+  }
+  if (ply) {
+    file.bytes = binary_ply(mesh, !mesh.vertex_colors.empty(), !mesh.face_colors.empty(), !mesh.vertex_sites.empty(), info);
     return file;
   }
   OpenMesh::IO::Options options;

