@@ -110,8 +110,9 @@ nlohmann::ordered_json parameters(const BatchOptions& opt) {
           {"keep_hetero_codes", a.structure.keep_hetero_codes},
           {"keep_cofactors", a.structure.keep_cofactors},
           {"max_atoms", a.max_atoms},
-          {"outputs", opt.outputs},
-          {"mesh", a.mesh_format}};
+          {"outputs", molecule::output_list(a.outputs)},
+          {"mesh", a.mesh_format},
+          {"mesh_resolution", a.mesh_resolution}};
 }
 
 class Batch {
@@ -255,7 +256,6 @@ private:
 
 int run_batch(BatchOptions& opt) {
   opt.analysis.max_atoms = opt.max_atoms;
-  opt.analysis.outputs = molecule::parse_output_selection(opt.outputs);
   std::vector<molecule::BatchInput> inputs = collect_inputs(opt);  // errors (duplicate ids) before any work
   molecule::output_directory_path(opt.output_dir);  // refuses a root or a link to nothing
   std::error_code ec;
@@ -265,7 +265,7 @@ int run_batch(BatchOptions& opt) {
     throw std::runtime_error(opt.output_dir + ": cannot create the output directory: " + ec.message());
   const unsigned jobs = opt.jobs ? opt.jobs : std::max(1u, std::thread::hardware_concurrency());
   spdlog::info("{} structures, {} worker{}, outputs {} in {}/", inputs.size(), jobs, jobs == 1 ? "" : "s",
-               opt.outputs, opt.output_dir);
+               molecule::output_list(opt.analysis.outputs), opt.output_dir);
   install_interrupt_handlers(2);
   Batch batch(opt, std::move(inputs));
   return batch.run(std::min<std::size_t>(jobs, std::numeric_limits<unsigned>::max()));
@@ -294,8 +294,7 @@ Subcommand add_batch_command(CLI::App& app) {
                 "the error an input would stop the run with), and exit");
   sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
-  sub->add_option("--outputs", opt->outputs, "What each structure writes to OUTDIR/<id>/: any of report,csv,pml,pdb,meshes,tunnels")
-      ->capture_default_str();
+  add_outputs_option(*sub, opt->outputs, "OUTDIR/<id>/ for each structure");
   sub->add_option("--max-atoms", opt->max_atoms, "Structures with more atoms (after the selection) are skipped")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -305,9 +304,10 @@ Subcommand add_batch_command(CLI::App& app) {
   });
   add_structure_options(*sub, opt->analysis.structure, opt->analysis.cavities.probe);
   add_cavity_options(*sub, opt->analysis);
-  return {sub, [opt] {
+  return {sub, [opt, sub] {
             if (opt->inputs.empty() && opt->lists.empty())
               throw std::runtime_error("batch: no INPUT and no --list (see --help)");
+            opt->analysis.outputs = selected_outputs(*sub, opt->outputs);
             if (opt->print_inputs) return print_inputs(*opt);
             return run_batch(*opt);
           }};

@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // alphapocket pockets FILE [-o OUTDIR] [--probe R] [--min-volume V]
-//                          [--mesh ply|obj|off|stl] [--json]
+//                          [--mesh ply|obj|off|stl] [--outputs LIST] [--json]
 //
 // The product command: reads a structure file, builds the weighted alpha
 // complex of its atoms (ProtOr radius + probe), finds pockets, voids and
 // tunnels (molecule::find_cavities) and writes OUTDIR (default
-// <name>_pockets in the current directory):
+// <name>_pockets in the current directory; --outputs chooses):
 //   report.json   everything, schema in README.md
 //   pockets.csv   one row per pocket
 //   sites.csv     one row per binding site (pockets and voids)
 //   pockets.pml   PyMOL script        pockets.pdb  centres as pseudo-atoms
 //   meshes/       one mesh per pocket and void, and the molecule's surface
+//                 (only when asked: --outputs all, or --mesh FMT)
 // then prints a one-screen summary of the best binding sites (pockets and
 // large voids; or, with --json, the report) on stdout.
 //
@@ -52,7 +53,9 @@ namespace fs = std::filesystem;
 struct PocketsOptions {
   InputOptions input;  // FILE, --probe and the structure selection
   std::optional<std::string> output_dir;  // -o '' is refused, not the default
-  molecule::AnalysisOptions analysis;  // --min-volume, --mesh
+  molecule::AnalysisOptions analysis;  // --min-volume, --mesh; .outputs from --outputs
+  // Meshes cost 10-20 times the analysis: written when asked for.
+  std::string outputs = "report,csv,pml,pdb,tunnels";
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
 };
@@ -95,7 +98,8 @@ void print_summary(const PocketsOptions& opt, const std::string& outdir, const m
   std::printf("%s: %s\n", opt.input.file.c_str(), molecule::summary(structure.report).c_str());
   std::printf("solvent-accessible surface (probe %g A): area %.1f A^2, volume %.1f A^3\n", opt.input.probe,
               cavities.sa_area, cavities.sa_volume);
-  std::printf("%s; written to %s/\n", cavity_counts(cavities).c_str(), outdir.c_str());
+  std::printf("%s; written to %s/%s\n", cavity_counts(cavities).c_str(), outdir.c_str(),
+              opt.analysis.outputs.meshes ? "" : " (--mesh ply adds the surface and cavity meshes)");
   if (!sites.empty()) {
     std::printf("\nsite  cavity         prob      score  SA vol A^3  MS vol A^3  depth A  mouths  lining residues\n");
     const std::size_t prefix = 76;  // columns before the residues
@@ -229,9 +233,9 @@ int run_pockets(const PocketsOptions& opt) {
   // the outputs are written).
   const std::string outdir = opt.output_dir ? *opt.output_dir : default_output_dir(file);
   install_interrupt_handlers(1);
-  molecule::PocketOutputDir out(outdir, {}, &temporaries());
-
   molecule::AnalysisOptions options = opt.analysis;
+  molecule::PocketOutputDir out(outdir, options.outputs, &temporaries());
+
   options.structure = opt.input.structure;
   options.cavities.probe = opt.input.probe;
   const molecule::Analysis analysis = molecule::analyse(file, options);
@@ -245,7 +249,7 @@ int run_pockets(const PocketsOptions& opt) {
   if (!opt.features.empty())
     molecule::write_file_atomically(opt.features,
                                     molecule::site_features_csv(analysis.structure, analysis.search.cavities));
-  if (opt.analysis.outputs.meshes)
+  if (options.outputs.meshes)
     spdlog::info("meshes: {:.3f} s at resolution {} A", out.mesh_seconds(), opt.analysis.mesh_resolution);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
@@ -266,12 +270,12 @@ int run_pockets(const PocketsOptions& opt) {
 Subcommand add_pockets_command(CLI::App& app) {
   auto opt = std::make_shared<PocketsOptions>();
   CLI::App* sub = app.add_subcommand(
-      "pockets", "Find the pockets, voids and tunnels of a structure; write report, CSV, PyMOL script, PDB and meshes");
+      "pockets", "Find the pockets, voids and tunnels of a structure; write report, CSV, PyMOL script, PDB (and meshes)");
   sub->footer(
       "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
       "ProtOr radii. OUTDIR gets report.json, pockets.csv, sites.csv, pockets.pml (PyMOL), pockets.cxc (ChimeraX), "
-      "structure.cif, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb and meshes/; see README.md for "
-      "their contents. -v logs every site, -vv with its lining residues.");
+      "structure.cif, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb, and meshes/ when asked for "
+      "(--mesh FMT or --outputs all); see README.md for their contents. -v logs every site, -vv with its lining residues.");
   add_input_options(*sub, opt->input);
   // Only structure files: atoms need radii and residues.
   sub->remove_option(sub->get_option("--weighted"));
@@ -282,10 +286,14 @@ Subcommand add_pockets_command(CLI::App& app) {
       ->type_name("OUTDIR")
       ->check(output_directory_name());
   add_cavity_options(*sub, opt->analysis);
+  add_outputs_option(*sub, opt->outputs, "OUTDIR");
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   sub->add_option("--features", opt->features,
                   "Also write every pocket's and void's ligandability-model features to this CSV file (for training/)");
-  return {sub, [opt] { return run_pockets(*opt); }};
+  return {sub, [opt, sub] {
+            opt->analysis.outputs = selected_outputs(*sub, opt->outputs);
+            return run_pockets(*opt);
+          }};
 }
 
 }  // namespace alphapocket

@@ -16,6 +16,7 @@
 
 #include "alpha/error.hpp"
 #include "molecule/atom_balls.hpp"
+#include "molecule/output_selection.hpp"
 #include "molecule/radii.hpp"
 
 namespace alphapocket {
@@ -51,7 +52,34 @@ CLI::Validator ranking_name() {
       "");
 }
 
+// "report,meshes": each item a known output; the error names the unknown one.
+CLI::Validator output_list() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          molecule::parse_output_selection(text);
+        } catch (const alpha::Error& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "");
+}
+
 }  // namespace
+
+void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where) {
+  sub.add_option("--outputs", list, "What to write to " + where + ": any of report,csv,pml,pdb,meshes,tunnels")
+      ->type_name("LIST")
+      ->capture_default_str()
+      ->check(output_list());
+}
+
+molecule::OutputSelection selected_outputs(const CLI::App& sub, const std::string& list) {
+  molecule::OutputSelection selection = molecule::parse_output_selection(list);
+  if (sub.count("--mesh") > 0 || sub.count("--mesh-resolution") > 0) selection.meshes = true;
+  return selection;
+}
 
 void add_input_options(CLI::App& sub, InputOptions& opt) {
   sub.add_option("FILE", opt.file,
@@ -122,7 +150,7 @@ void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options) {
       ->capture_default_str()
       ->type_name("V")
       ->check(finite_number(0));
-  sub.add_option("--mesh", options.mesh_format, "Format of the mesh files: ply, obj, off or stl")
+  sub.add_option("--mesh", options.mesh_format, "Write the meshes (molecular surface, pocket and void casts) in this format: ply, obj, off or stl")
       ->type_name("FMT")
       ->capture_default_str()
       ->check(CLI::IsMember({"ply", "obj", "off", "stl"}).description(""));

@@ -51,6 +51,15 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
 // `batch` share: --min-volume, --mesh.
 void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options);
 
+// Adds --outputs LIST (report,csv,pml,pdb,meshes,tunnels or all; checked, a
+// wrong item is a usage error); `where` names the folder they go to in the help.
+void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where);
+
+// The outputs that --outputs `list` selects, with the meshes added when
+// --mesh or --mesh-resolution is on the command line: asking for a mesh
+// format is asking for meshes.
+molecule::OutputSelection selected_outputs(const CLI::App& sub, const std::string& list);
+
 // A structure file read through the molecule layer; logs (info) what was
 // kept and dropped, and its warnings.
 molecule::Structure read_structure_file(const std::string& file, const molecule::StructureOptions& options);

@@ -55,7 +55,7 @@ for f in "${structures[@]}"; do
   [[ -f $f ]] || continue
   b=$(basename "$f")
   case $b in *.rad|*.txt|*.md|*.xyz) continue ;; esac
-  same "pockets $b" pockets "$f" -o OUT
+  same "pockets $b" pockets "$f" --outputs all -o OUT
   same "pockets --pores --json $b" pockets "$f" --pores --json -o OUT
   same "surface $b" surface "$f" --json --per-atom
 done

@@ -27,26 +27,6 @@ namespace molecule {
 
 namespace fs = std::filesystem;
 
-OutputSelection parse_output_selection(const std::string& list) {
-  OutputSelection s{false, false, false, false, false, false};
-  std::size_t begin = 0;
-  while (begin <= list.size()) {
-    const std::size_t end = std::min(list.find(',', begin), list.size());
-    const std::string item = list.substr(begin, end - begin);
-    bool* flag = item == "report" ? &s.report
-                 : item == "csv"  ? &s.csv
-                 : item == "pml"  ? &s.pml
-                 : item == "pdb"  ? &s.pdb
-                 : item == "meshes" ? &s.meshes
-                 : item == "tunnels" ? &s.tunnels
-                                    : nullptr;
-    if (!flag) alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels)");
-    *flag = true;
-    begin = end + 1;
-  }
-  return s;
-}
-
 namespace {
 
 constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "sites.csv", "pockets.pml", "pockets.cxc", "structure.cif",

@@ -90,7 +90,8 @@ case "$case_name" in
     run batch "$tmp/empty" -o "$tmp/o"
     expect_error "no structure files in the inputs"
     run batch "$data/1fkgA.pdb" -o "$tmp/o" --outputs report,movie
-    expect_error "unknown output 'movie'"
+    expect_error "--outputs: unknown output 'movie'"
+    [[ $rc -eq 2 ]] || fail "--outputs report,movie: exit code $rc, expected 2 (a wrong command line)"
     run batch "$data/1fkgA.pdb"
     [[ $rc -eq 2 ]] || fail "no -o: exit code $rc, expected 2"
     [[ ! -e "$tmp/o" ]] || fail "OUTDIR created"

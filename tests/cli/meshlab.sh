@@ -47,7 +47,7 @@ case "$case_name" in
       "$exe" -q surface "$file" --json >"$tmp/$name.json"
       ms_volume=$(grep -o '"ms_volume":[0-9.e+]*' "$tmp/$name.json" | cut -d: -f2)
       ms_area=$(grep -o '"ms_area":[0-9.e+]*' "$tmp/$name.json" | cut -d: -f2)
-      run pockets "$file" -o "$tmp/$name"
+      run pockets "$file" -o "$tmp/$name" --mesh ply
       expect_success
       measure "$tmp/$name/meshes/surface.ply"
       expect_closed_manifold "$name surface.ply"
@@ -84,7 +84,7 @@ case "$case_name" in
         within "pocket_$k.$fmt volume" "$(volume)" "$expected" "$tolerance"
       done
     done
-    run pockets "$data/3stdA.pdb" -o "$tmp/void"
+    run pockets "$data/3stdA.pdb" -o "$tmp/void" --mesh ply
     expect_success
     volumes=($(sed -n '/"voids": \[/,$p' "$tmp/void/report.json" | grep -o '"ms_volume": [0-9.e+]*' | awk '{print $2}'))
     voids=$(ls "$tmp/void/meshes" | grep -c '^void_[0-9]*\.ply$' || true)
@@ -116,7 +116,7 @@ case "$case_name" in
     ;;
   project)
     # meshlab.mlp opens the surface and every cast at once.
-    run pockets "$pdb" -o "$tmp/o"
+    run pockets "$pdb" -o "$tmp/o" --outputs all
     expect_success
     files=$(ls "$tmp/o/meshes" | grep -c '\.ply$')
     (cd "$tmp/o/meshes" && meshlabserver -p meshlab.mlp -w "$tmp/saved.mlp" >"$tmp/meshlab.log" 2>&1) ||

@@ -48,7 +48,7 @@ permute() {
 # Runs pockets and surface on $tmp/work/x.pdb (always that path: pockets.pml
 # names it) and keeps their outputs under $tmp/NAME.
 outputs() {  # NAME
-  run pockets "$tmp/work/x.pdb" -o "$tmp/work/out"
+  run pockets "$tmp/work/x.pdb" -o "$tmp/work/out" --outputs all
   expect_success
   mv "$tmp/work/out" "$tmp/$1"
   run surface "$tmp/work/x.pdb" --json

@@ -22,10 +22,11 @@ summary_counts() {
 }
 
 # The outputs of one run in DIR agree: one CSV row, one pml selection, one
-# CEN pseudo-atom and one mesh per pocket (and per void).
-expect_consistent() {  # DIR POCKETS VOIDS EXT
-  local dir=$1 pockets=$2 voids=$3 ext=$4
-  for f in report.json pockets.csv pockets.pml pockets.cxc structure.cif pockets.pdb "meshes/surface.$ext" meshes/meshlab.mlp; do
+# CEN pseudo-atom and, with meshes of format EXT (none if EXT is empty), one
+# mesh per pocket (and per void).
+expect_consistent() {  # DIR POCKETS VOIDS [EXT]
+  local dir=$1 pockets=$2 voids=$3 ext=${4:-}
+  for f in report.json pockets.csv pockets.pml pockets.cxc structure.cif pockets.pdb; do
     [[ -s "$dir/$f" ]] || fail "$dir/$f missing or empty"
   done
   [[ $(($(wc -l <"$dir/pockets.csv") - 1)) -eq $pockets ]] || fail "pockets.csv: not $pockets rows"
@@ -33,9 +34,17 @@ expect_consistent() {  # DIR POCKETS VOIDS EXT
   [[ $(grep -c '^HETATM.\{6\} CEN STP V' "$dir/pockets.pdb") -eq $voids ]] || fail "pockets.pdb: not $voids voids"
   [[ $(grep -c '^pseudoatom pocket_[0-9]*_center' "$dir/pockets.pml") -eq $pockets ]] || fail "pockets.pml: centres"
   [[ $(grep -c '"rank": ' "$dir/report.json") -ge $((pockets + voids)) ]] || fail "report.json: ranks"
+  [[ -z $(find "$dir" -name '.*.tmp') ]] || fail "temporary files left"
+  if [[ -z $ext ]]; then
+    [[ ! -e "$dir/meshes" ]] || fail "meshes/ written without being asked for"
+    ! grep -q '"mesh":' "$dir/report.json" || fail "report.json names meshes that were not written"
+    return
+  fi
+  for f in "meshes/surface.$ext" meshes/meshlab.mlp; do
+    [[ -s "$dir/$f" ]] || fail "$dir/$f missing or empty"
+  done
   [[ $(ls "$dir/meshes" | grep -c "^pocket_[0-9]*\.$ext$") -eq $pockets ]] || fail "meshes: not $pockets pockets"
   [[ $(ls "$dir/meshes" | grep -c "^void_[0-9]*\.$ext$") -eq $voids ]] || fail "meshes: not $voids voids"
-  [[ -z $(find "$dir" -name '.*.tmp') ]] || fail "temporary files left"
 }
 
 case "$case_name" in
@@ -56,11 +65,13 @@ case "$case_name" in
     grep -qE '^widest tunnel: bottleneck radius [0-9]+\.[0-9]{2} A between A:[A-Z]{3}:[0-9]+' "$tmp/out" ||
       fail "no line for the widest tunnel"
     [[ $(wc -l <"$tmp/out") -le 24 ]] || fail "the summary is longer than one screen"
-    expect_consistent 1a26A_pockets "$pockets" "$voids" ply
+    expect_consistent 1a26A_pockets "$pockets" "$voids"
+    grep -q "; written to 1a26A_pockets/ (--mesh ply adds the surface and cavity meshes)$" "$tmp/out" ||
+      fail "the summary does not say how to get the meshes"
     grep -qF '"structure.cif"), "1a26A")' 1a26A_pockets/pockets.pml || fail "pockets.pml does not load structure.cif"
     grep -qx 'open structure.cif' 1a26A_pockets/pockets.cxc || fail "pockets.cxc does not open structure.cif"
     ! grep -qF "$tmp" 1a26A_pockets/pockets.pml 1a26A_pockets/pockets.cxc || fail "a script names an absolute path"
-    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 11 + pockets + voids + 2)) ]] || fail "unexpected files: $(tree_of .)"
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 10)) ]] || fail "unexpected files: $(tree_of .)"
     ;;
   json)
     # --json: the report on one line, the same as report.json.
@@ -70,11 +81,11 @@ case "$case_name" in
       fail "stdout differs from report.json"
     pockets=$(grep -o '"pockets":[0-9]*' "$tmp/out" | head -n 1 | cut -d: -f2)
     voids=$(grep -o '"voids":[0-9]*' "$tmp/out" | head -n 1 | cut -d: -f2)
-    expect_consistent "$tmp/out dir" "$pockets" "$voids" ply
+    expect_consistent "$tmp/out dir" "$pockets" "$voids"
     ;;
   mesh_formats)
-    # --mesh obj; a second run with the default format into the same
-    # directory replaces the meshes (no .obj left).
+    # --mesh obj writes the meshes; a second run with the default format
+    # (--outputs all) into the same directory replaces them (no .obj left).
     run pockets "$pdb" -o "$tmp/o" --mesh obj
     expect_success
     read -r pockets voids tunnels <<<"$(summary_counts)"
@@ -82,10 +93,29 @@ case "$case_name" in
     [[ -z $(ls "$tmp/o/meshes" | grep -v '\.\(obj\|mtl\|mlp\)$') ]] || fail "other meshes than .obj"
     grep -q '^mtllib surface.mtl$' "$tmp/o/meshes/surface.obj" || fail "surface.obj names no .mtl"
     grep -q '^Kd ' "$tmp/o/meshes/surface.mtl" || fail "surface.mtl has no colours"
-    run pockets "$pdb" -o "$tmp/o"
+    grep -q "; written to $tmp/o/$" "$tmp/out" || fail "the summary offers meshes already written"
+    run pockets "$pdb" -o "$tmp/o" --outputs all
     expect_success
     expect_consistent "$tmp/o" "$pockets" "$voids" ply
     [[ -z $(ls "$tmp/o/meshes" | grep -v '\.\(ply\|mlp\)$') ]] || fail "meshes of the first run left: $(ls "$tmp/o/meshes")"
+    ;;
+  outputs)
+    # --outputs chooses the files; the meshes' own options ask for meshes.
+    run -q pockets "$pdb" -o "$tmp/o" --outputs report,tunnels
+    expect_success
+    [[ $(tree_of "$tmp/o") == "report.json tunnel_profiles.csv tunnels.csv tunnels.pdb" ]] ||
+      fail "--outputs report,tunnels wrote: $(tree_of "$tmp/o")"
+    run -q pockets "$pdb" -o "$tmp/o" --outputs report --mesh-resolution 1.5
+    expect_success
+    [[ $(tree_of "$tmp/o" | tr ' ' '\n' | grep -vc '^meshes') -eq 1 && -s "$tmp/o/meshes/surface.ply" ]] ||
+      fail "--mesh-resolution did not add the meshes: $(tree_of "$tmp/o")"
+    grep -q '"mesh": "meshes/surface.ply"' "$tmp/o/report.json" || fail "report.json does not name the surface mesh"
+    for list in bogus "report,,csv" ""; do
+      run pockets "$pdb" -o "$tmp/bad" --outputs "$list"
+      [[ $rc -eq 2 && $(wc -l <"$tmp/err") -eq 1 ]] || fail "--outputs '$list': exit code $rc, expected 2 and one line"
+      grep -q "^ERROR: --outputs: unknown output '" "$tmp/err" || fail "--outputs '$list': $(head -n 1 "$tmp/err")"
+      [[ ! -e "$tmp/bad" ]] || fail "--outputs '$list' created OUTDIR"
+    done
     ;;
   min_volume)
     # A huge --min-volume drops every pocket and void: the outputs are
@@ -93,7 +123,7 @@ case "$case_name" in
     run pockets "$pdb" -o "$tmp/o" --min-volume 1e9
     expect_success
     [[ $(summary_counts) == "0 0 "* ]] || fail "pockets or voids left: $(summary_counts)"
-    expect_consistent "$tmp/o" 0 0 ply
+    expect_consistent "$tmp/o" 0 0
     grep -q '"pockets": \[\]' "$tmp/o/report.json" || fail "report.json: pockets not empty"
     ;;
   probe)

@@ -11,8 +11,12 @@ struct OutputSelection {
   bool tunnels = true;  // tunnels.csv, tunnel_profiles.csv, tunnels.pdb
 };
 
-// "report,csv,pml,pdb,meshes,tunnels" (any subset, any order) -> a selection;
-// throws alpha::Error naming an unknown item.
+// "report,csv,pml,pdb,meshes,tunnels" (any subset, any order; "all" for
+// every one) -> a selection; throws alpha::Error naming an unknown item.
 OutputSelection parse_output_selection(const std::string& list);
+
+// The selection as a list in the order above ("report,meshes"): the same
+// list for the same selection, however it was written.
+std::string output_list(const OutputSelection& selection);
 
 }  // namespace molecule
