@@ -28,6 +28,9 @@ inline constexpr std::array<double, 8> kWeight{0.1012285362903763, 0.22238103445
 inline constexpr double kCutPrecision = 1e-8;  // of tau, relative to r
 inline constexpr int kEdgeBisections = 24;  // where tau = r starts or stops between two nodes
 inline constexpr double kMaxPiece = kPi / 4;
+// cut()'s bisection narrows its hood to the segment left after this many
+// halvings.
+inline constexpr int kCutNarrowAfter = 3;
 
 inline double wrap(double a) {
   a = std::fmod(a, kTwoPi);
@@ -243,10 +246,10 @@ inline double wedge_volume(double rho, double r, double a, double b) {
   });
 }
 
-// Where a predicate that holds at a and not at b (or the reverse) changes.
+// Where a predicate that holds at a and not at b (or the reverse) changes;
+// at_a: its value at a.
 template <class Predicate>
-double change(double a, double b, Predicate holds, int bisections = kEdgeBisections) {
-  const bool at_a = holds(a);
+double change(double a, double b, bool at_a, Predicate holds, int bisections = kEdgeBisections) {
   for (int k = 0; k < bisections; ++k) {
     const double mid = (a + b) / 2;
     (holds(mid) == at_a ? a : b) = mid;
@@ -260,7 +263,7 @@ std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_
   double start = a;
   for (int k = 0; k < 8; ++k) {
     if (k < 7 && at_node[k] == at_node[k + 1]) continue;
-    const double end = k == 7 ? b : change(node(a, b, k), node(a, b, k + 1), holds);
+    const double end = k == 7 ? b : change(node(a, b, k), node(a, b, k + 1), at_node[k], holds);
     out.push_back({start, end, at_node[k]});
     start = end;
   }
@@ -527,6 +530,7 @@ private:
   // balls.
   mutable Hood piece_;
   mutable std::array<Hood, 8> rows_, at_r_;
+  mutable Hood segment_;  // cut()'s
   mutable std::vector<Index> ids_;
 
   std::span<const Arc> edge_arcs(Index e) const {
@@ -621,9 +625,11 @@ private:
   }
 
   // Into `out`, what of h (gathered for a wider reach) clear() can find or
-  // be inside at points within `reach` of x, in h's order.
-  void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const {
-    const double radius = reach + r_ + 2 * tol_;
+  // be inside at points within `reach` of x tested at distances t up to
+  // `within` (at most r), in h's order.
+  void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const { narrow(h, x, reach, r_, out); }
+  void narrow(const Hood& h, const Vec3& x, double reach, double within, Hood& out) const {
+    const double radius = reach + within + 2 * tol_;
     out.balls.clear();
     out.circles.clear();
     out.arc_bounds.clear();
@@ -804,9 +810,17 @@ private:
       if (!clear(h, q + beyond * u, beyond, self)) return t;
       break;
     }
-    while (hi - lo > kCutPrecision * r_) {
+    // The bisection tests points of [lo, hi] on the ray at distances up to
+    // hi: once that is short, against the part of h near it (the answers
+    // are h's: the rest of h is not found there).
+    const Hood* near = &h;
+    for (int step = 0; hi - lo > kCutPrecision * r_; ++step) {
+      if (step == kCutNarrowAfter) {
+        narrow(h, q + ((lo + hi) / 2) * u, (hi - lo) / 2 + tol_, hi, segment_);
+        near = &segment_;
+      }
       const double mid = (lo + hi) / 2;
-      (clear(h, q + mid * u, mid, self) ? lo : hi) = mid;
+      (clear(*near, q + mid * u, mid, self) ? lo : hi) = mid;
     }
     return lo;
   }

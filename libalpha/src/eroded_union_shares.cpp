@@ -331,7 +331,7 @@ std::vector<Segment> ErodedUnion::Integrator::by_cell(const std::vector<Segment>
       const Index next = cell_at(node(g.lo, g.hi, k + 1));
       if (next == before) continue;
       const double x = change(
-          node(g.lo, g.hi, k), node(g.lo, g.hi, k + 1), [&](double y) { return cell_at(y) == before; },
+          node(g.lo, g.hi, k), node(g.lo, g.hi, k + 1), true, [&](double y) { return cell_at(y) == before; },
           kCellBisections);
       out.push_back({start, x, true});
       start = x;
