@@ -257,12 +257,20 @@ double change(double a, double b, bool at_a, Predicate holds, int bisections = k
   return (a + b) / 2;
 }
 
-template <class Predicate>
-std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_node, Predicate holds) {
+struct NoPreparation {
+  void operator()(double, double) const {}
+};
+
+// prepare(lo, hi): called before a change is located between the nodes lo
+// and hi (the predicate is tested there).
+template <class Predicate, class Prepare = NoPreparation>
+std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_node, Predicate holds,
+                              Prepare prepare = {}) {
   std::vector<Segment> out;
   double start = a;
   for (int k = 0; k < 8; ++k) {
     if (k < 7 && at_node[k] == at_node[k + 1]) continue;
+    if (k < 7) prepare(node(a, b, k), node(a, b, k + 1));
     const double end = k == 7 ? b : change(node(a, b, k), node(a, b, k + 1), at_node[k], holds);
     out.push_back({start, end, at_node[k]});
     start = end;
@@ -530,7 +538,7 @@ private:
   // balls.
   mutable Hood piece_;
   mutable std::array<Hood, 8> rows_, at_r_;
-  mutable Hood segment_;  // cut()'s
+  mutable Hood segment_;  // the part near a short stretch of tests: cut()'s, arc_piece()'s changes
   mutable std::vector<Index> ids_;
 
   std::span<const Arc> edge_arcs(Index e) const {
@@ -835,8 +843,8 @@ private:
     // arc about q, psi from psi_i to psi_j (less than half a turn): within
     // half its chord of the chord's midpoint, tested against the part of
     // the hood near that.
-    const auto clear_at_r = [&](int i, const Vec3& radial, double psi) {
-      return clear(at_r_[i], c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
+    const auto clear_at_r = [&](const Hood& near, const Vec3& radial, double psi) {
+      return clear(near, c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
     };
     std::array<std::array<bool, 8>, 8> at_r;
     all_clear = true;
@@ -844,7 +852,8 @@ private:
       const Vec3 radial = c.radial(node(begin, end, i));
       const Vec3 a = c.ray(radial, psi_i), b = c.ray(radial, psi_j);
       narrow(h, c.o + c.rho * radial + (r_ / 2) * (a + b), r_ / 2 * norm(b - a) + tol_, at_r_[i]);
-      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(i, radial, node(psi_i, psi_j, j))) && all_clear;
+      for (int j = 0; j < 8; ++j)
+        all_clear = (at_r[i][j] = clear_at_r(at_r_[i], radial, node(psi_i, psi_j, j))) && all_clear;
     }
     if (all_clear)
       return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
@@ -855,7 +864,16 @@ private:
     for (int i = 0; i < 8; ++i) {
       const double w = weight(begin, end, i);
       const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
-      for (const Segment& g : segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(i, radial, psi); })) {
+      // A change between two nodes is located among the points at r
+      // between them: against the part of the row's hood near their arc.
+      const Hood* near = &at_r_[i];
+      const auto between = [&](double lo, double hi) {
+        const Vec3 a = c.ray(radial, lo), b = c.ray(radial, hi);
+        narrow(at_r_[i], q + (r_ / 2) * (a + b), r_ / 2 * norm(b - a) + tol_, segment_);
+        near = &segment_;
+      };
+      for (const Segment& g :
+           segments(psi_i, psi_j, at_r[i], [&](double psi) { return clear_at_r(*near, radial, psi); }, between)) {
         if (g.holds) {
           out.volume += w * wedge_volume(c.rho, r_, g.lo, g.hi);
           out.area += w * wedge_area(c.rho, r_, g.lo, g.hi);
