@@ -108,6 +108,20 @@ std::vector<char> open_cells(const alpha::AlphaComplex& ac, Index level) {
   return reached;
 }
 
+// Distance from p to the triangle abc: to its plane when p projects
+// inside it, else to the nearest of its sides.
+double triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const auto segment = [&](const Vec3& u, const Vec3& v) {
+    const double l = std::clamp(dot(p - u, v - u) / dot(v - u, v - u), 0.0, 1.0);
+    return alpha::norm(p - (u + l * (v - u)));
+  };
+  const Vec3 n = alpha::cross(b - a, c - a);
+  const Vec3 q = p - (dot(p - a, n) / dot(n, n)) * n;
+  const bool inside = dot(alpha::cross(b - a, q - a), n) >= 0 && dot(alpha::cross(c - b, q - b), n) >= 0 &&
+                      dot(alpha::cross(a - c, q - c), n) >= 0;
+  return inside ? alpha::norm(p - q) : std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
 // Properties every result must have, whatever the input.
 void check_invariants(const Balls& b, const Cavities& cav) {
   const alpha::AlphaComplex& ac = b.complex;
@@ -115,6 +129,15 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   const alpha::Simplices& s = ac.simplices();
   const Index level = ac.level(0.0);
   CHECK(cav.voids.size() == ac.betti(level)[2]);
+  // Per flow region, its empty triangles to the outside (a pocket's depth
+  // is measured from those of its region).
+  const alpha::DiscreteFlow flow(ac, level);
+  std::vector<std::vector<Index>> region_mouths(flow.num_regions());
+  for (Index c = 0; c < t.num_cells(); ++c)
+    for (int k = 0; k < 4; ++k)
+      if (flow.region(c) != alpha::kNone && flow.outside(t.cell(c).n[k]) &&
+          ac.triangle_interval(s.cell_triangle(c, k)).entry >= level)
+        region_mouths[flow.region(c)].push_back(s.cell_triangle(c, k));
   std::set<Index> seen;
   auto check_cavity = [&](const Cavity& c, bool pocket) {
     REQUIRE(!c.cells.empty());
@@ -193,6 +216,20 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     CHECK(c.buriedness >= 0);
     CHECK(c.buriedness <= 1);
     if (!pocket) CHECK(c.depth == 0);
+    // Depth: the farthest cell centroid's distance to its nearest mouth
+    // triangle of the region, by scan.
+    double depth = 0;
+    for (Index cell : c.cells) {
+      const auto& v = t.cell(cell).v;
+      const Vec3 x = 0.25 * (t.point(v[0]) + t.point(v[1]) + t.point(v[2]) + t.point(v[3]));
+      double nearest = pocket ? std::numeric_limits<double>::infinity() : 0;
+      for (Index f : region_mouths[flow.region(cell)]) {
+        const auto& fv = s.triangle(f);
+        nearest = std::min(nearest, triangle_distance(x, t.point(fv[0]), t.point(fv[1]), t.point(fv[2])));
+      }
+      depth = std::max(depth, nearest);
+    }
+    CHECK(c.depth == Approx(depth).epsilon(1e-12).margin(1e-12));
   };
   for (const Cavity& c : cav.pockets) check_cavity(c, true);
   for (const Cavity& c : cav.voids) check_cavity(c, false);

@@ -127,3 +127,34 @@ TEST_CASE("PointGrid: NaN, infinite and far queries; sparse points far apart", "
   CHECK(visited(empty, {0, 0, 0}, 1.0).empty());
   CHECK(empty.covers_all({0, 0, 0}, 1.0));
 }
+
+TEST_CASE("PointGrid::any stops at the first visited point its test accepts", "[point_grid]") {
+  // Indexed cells, binary-searched cells (a far outlier) and a scan (a cube
+  // of more cells than points): the test sees the visit's prefix up to the
+  // first accepted point, and any() says whether there was one.
+  const std::vector<Vec3> compact = testing::random_points(800, 35, 20.0);
+  std::vector<Vec3> sparse = compact;
+  sparse.push_back({1e9, 0, 0});
+  std::mt19937_64 rng(36);
+  std::uniform_real_distribution<double> coord(-3, 23), radius(0, 5);
+  for (const std::vector<Vec3>* pts : {&compact, static_cast<const std::vector<Vec3>*>(&sparse)}) {
+    alpha::PointGrid g(1.3);
+    for (Index i = 0; i < Index(pts->size()); ++i) g.add((*pts)[i], i);
+    g.finish();
+    for (int k = 0; k < 100; ++k) {
+      const Vec3 c{coord(rng), coord(rng), coord(rng)};
+      const double r = k == 0 ? 1e6 : radius(rng);
+      const Index modulus = 1 + Index(k % 40);  // accepts ids divisible by it
+      const std::vector<Index> all = visited(g, c, r);
+      const auto first = std::find_if(all.begin(), all.end(), [&](Index i) { return i % modulus == 0; });
+      std::vector<Index> seen;
+      const bool found = g.any(c, r, [&](Index i) {
+        seen.push_back(i);
+        return i % modulus == 0;
+      });
+      INFO("centre " << c.x << " " << c.y << " " << c.z << ", radius " << r << ", modulus " << modulus);
+      CHECK(found == (first != all.end()));
+      CHECK(seen == std::vector<Index>(all.begin(), first == all.end() ? first : first + 1));
+    }
+  }
+}

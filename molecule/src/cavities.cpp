@@ -294,9 +294,11 @@ private:
 
     // The largest distance from a cell to its nearest mouth; a cell with a
     // mouth within the depth so far cannot raise it.
+    Index near_mouth = alpha::kNone;
     for (Index c : cells) {
       const Vec3& x = space[c].centroid;
-      if (!mouths.empty() && !mouths.within(x, cav.depth)) cav.depth = std::max(cav.depth, mouths.distance(x));
+      if (!mouths.empty() && !mouths.within(x, cav.depth, near_mouth))
+        cav.depth = std::max(cav.depth, mouths.distance(x, cav.depth));
     }
 
     const double r2 = options_.burial_radius * options_.burial_radius;

@@ -38,18 +38,27 @@ public:
 
   bool empty() const { return triangles_.empty(); }
 
-  // Whether some triangle is within d of x (distance <= d).
-  bool within(const alpha::Vec3& x, double d) const {
-    bool found = false;
-    grid_.visit(x, (d + reach_) * (1 + 1e-9) + 1e-9, [&](alpha::Index k) { found = found || distance(x, k) <= d; });
-    return found;
+  // Whether some triangle is within d of x (distance <= d). `hint`: the
+  // triangle tried first, and the one found (kNone: none yet); the queries
+  // of a cavity's neighbouring cells mostly find the same one, where a
+  // search of a deep cavity's cube visits thousands.
+  bool within(const alpha::Vec3& x, double d, alpha::Index& hint) const {
+    if (hint != alpha::kNone && distance(x, hint) <= d) return true;
+    return grid_.any(x, (d + reach_) * (1 + 1e-9) + 1e-9, [&](alpha::Index k) {
+      if (distance(x, k) > d) return false;
+      hint = k;
+      return true;
+    });
   }
 
   // The smallest distance from x to a triangle (infinite if there are none).
-  double distance(const alpha::Vec3& x) const {
+  // `beyond`: where the search starts, a distance it likely exceeds (a
+  // deep cavity's cell is far from every mouth: a search from 0 would visit
+  // the same triangles several times over).
+  double distance(const alpha::Vec3& x, double beyond = 0) const {
     double d = std::numeric_limits<double>::infinity();
     if (triangles_.empty()) return d;
-    for (double h = 2 * reach_ + 4;; h *= 2) {
+    for (double h = beyond + 2 * reach_ + 4;; h *= 2) {
       grid_.visit(x, h, [&](alpha::Index k) { d = std::min(d, distance(x, k)); });
       if (d < (h - reach_) * (1 - 1e-9) - 1e-9 || grid_.covers_all(x, h)) return d;
     }

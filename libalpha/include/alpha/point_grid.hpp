@@ -44,14 +44,26 @@ public:
   // (A NaN point is kept in an extreme cell: defined, not meaningful.)
   template <class F>
   void visit(const Vec3& center, double radius, F f) const {
+    any(center, radius, [&](Index id) {
+      f(id);
+      return false;
+    });
+  }
+
+  // The same visit, stopping at the first point for which f(id) is true;
+  // whether there was one.
+  template <class F>
+  bool any(const Vec3& center, double radius, F f) const {
     Key lo, hi;
-    if (!range(center, radius, lo, hi)) return;
+    if (!range(center, radius, lo, hi)) return false;
     double cells = 1;
     for (int a = 0; a < 3; ++a) cells *= double(hi[a]) - double(lo[a]) + 1;  // in doubles: no overflow
     if (cells > double(entries_.size())) {
       for (const auto& [k, id] : entries_)
-        if (lo[0] <= k[0] && k[0] <= hi[0] && lo[1] <= k[1] && k[1] <= hi[1] && lo[2] <= k[2] && k[2] <= hi[2]) f(id);
-      return;
+        if (lo[0] <= k[0] && k[0] <= hi[0] && lo[1] <= k[1] && k[1] <= hi[1] && lo[2] <= k[2] && k[2] <= hi[2] &&
+            f(id))
+          return true;
+      return false;
     }
     if (!start_.empty()) {
       for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
@@ -59,17 +71,20 @@ public:
           // The row's cells lo[2]..hi[2] hold consecutive entries.
           const std::size_t row = row_index(x, y);
           const Index end = start_[row + std::size_t(hi[2] - low_[2]) + 1];
-          for (Index e = start_[row + std::size_t(lo[2] - low_[2])]; e < end; ++e) f(entries_[e].second);
+          for (Index e = start_[row + std::size_t(lo[2] - low_[2])]; e < end; ++e)
+            if (f(entries_[e].second)) return true;
         }
-      return;
+      return false;
     }
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
           const Key k{x, y, z};
           auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(k, Index(0)));
-          for (; it != entries_.end() && it->first == k; ++it) f(it->second);
+          for (; it != entries_.end() && it->first == k; ++it)
+            if (f(it->second)) return true;
         }
+    return false;
   }
 
   // Whether visit(center, radius) reaches every point.
