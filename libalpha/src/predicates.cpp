@@ -107,10 +107,11 @@ int Kernel::power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p, 
 // so the loop always ends. A virtual vertex (kNone) has no perturbation.
 bool Kernel::perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p, Index pid) {
   int order[4] = {0, 1, 2, 3};
-  auto rank = [&](int k) { return id[k] == kNone ? -1 : static_cast<long long>(id[k]); };
+  auto input_index = [&](Index i) { return static_cast<long long>(ids_ ? ids_[i] : i); };
+  auto rank = [&](int k) { return id[k] == kNone ? -1 : input_index(id[k]); };
   std::sort(order, order + 4, [&](int x, int y) { return rank(x) > rank(y); });
   for (int k : order) {
-    if (rank(k) < static_cast<long long>(pid)) break;
+    if (rank(k) < input_index(pid)) break;
     const Vec3* r[4] = {q[0], q[1], q[2], q[3]};
     r[k] = &p;
     const int o = orient3d(*r[0], *r[1], *r[2], *r[3]);

@@ -86,10 +86,13 @@ int affine_dimension(const std::vector<Vec3>& points) {
 }
 
 // The incremental construction; lives only while the triangulation is built.
+// It works on a copy of the points in insertion order, so that consecutive
+// insertions read nearby memory: a vertex id is a position in that order
+// (input_[id] is its input index, which also orders the perturbation) until
+// finish() writes the input indices into the cells.
 class Triangulation::Builder {
 public:
-  explicit Builder(Triangulation& t)
-      : t_(t), kernel_(t.points_.data(), t.weights_.empty() ? nullptr : t.weights_.data()) {}
+  explicit Builder(Triangulation& t) : t_(t) {}
 
   void run() {
     const std::vector<Index> reps = merge_duplicates();
@@ -101,10 +104,15 @@ public:
     // The cell array is written at random places as it fills.
     reserve_huge(cells_, expected);
     cell_mark_.assign(expected, 0);
-    std::vector<Index> order = brio_order(t_.points_, reps);
-    const std::array<Index, 4> first = initial_simplex(order);
+    input_ = brio_order(t_.points_, reps);
+    points_.reserve(input_.size());
+    for (Index i : input_) points_.push_back(t_.points_[i]);
+    if (t_.weighted())
+      for (Index i : input_) weights_.push_back(t_.weights_[i]);
+    kernel_ = Kernel(points_.data(), weights_.empty() ? nullptr : weights_.data(), input_.data());
+    const std::array<Index, 4> first = initial_simplex();
     Index hint = 0;
-    for (Index p : order) {
+    for (Index p = 0; p < points_.size(); ++p) {
       if (p == first[0] || p == first[1] || p == first[2] || p == first[3]) continue;
       hint = insert(p, hint);
     }
@@ -131,7 +139,10 @@ private:
                                            {{1, 2}, {0, 2}, {0, 1}, {-1, -1}}};
 
   Triangulation& t_;
-  Kernel kernel_;
+  std::vector<Index> input_;    // input index of each vertex id
+  std::vector<Vec3> points_;    // point of each vertex id
+  std::vector<double> weights_; // its weight (weighted input only)
+  Kernel kernel_{nullptr, nullptr};  // on points_, once they are copied
   std::vector<Cell>& cells_ = t_.cells_;
   std::vector<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
   std::uint32_t stamp_ = 2;
@@ -174,9 +185,11 @@ private:
     return reps;
   }
 
-  std::array<Index, 4> initial_simplex(const std::vector<Index>& order) {
+  std::array<Index, 4> initial_simplex() {
+    std::vector<Index> order(points_.size());
+    std::iota(order.begin(), order.end(), Index(0));
     std::array<Index, 4> v;
-    const int dimension = spanning_points(kernel_, t_.points_, order, v);
+    const int dimension = spanning_points(kernel_, points_, order, v);
     if (dimension == 1) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
     if (dimension == 2) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
     if (kernel_.orient3d(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
@@ -251,7 +264,7 @@ private:
     const Index start = locate(p, hint);
     stamp_ += 2;
     if (!conflict(start, p)) {
-      t_.status_[p] = PointStatus::hidden;
+      t_.status_[input_[p]] = PointStatus::hidden;
       return start;
     }
     find_cavity(start, p);
@@ -343,7 +356,7 @@ private:
   // Weighted points only: a vertex of the conflict cells that no boundary
   // facet keeps lies inside the cavity, and the new point hides it.
   void mark_cavity_vertices() {
-    if (vertex_mark_.size() < t_.points_.size()) vertex_mark_.assign(t_.points_.size(), 0);
+    if (vertex_mark_.size() < points_.size()) vertex_mark_.assign(points_.size(), 0);
     cavity_vertices_.clear();
     for (Index c : conflict_)
       for (Index v : cells_[c].v)
@@ -354,10 +367,11 @@ private:
       for (Index v : f.v)
         if (v != kInfinite) vertex_mark_[v] = stamp_ + 1;
     for (Index v : cavity_vertices_)
-      if (vertex_mark_[v] == stamp_) t_.status_[v] = PointStatus::hidden;
+      if (vertex_mark_[v] == stamp_) t_.status_[input_[v]] = PointStatus::hidden;
   }
 
-  // Drops unused cell slots and fills in counts and vertex-to-cell links.
+  // Drops unused cell slots, gives the vertices their input indices and
+  // fills in counts and vertex-to-cell links.
   void finish() {
     std::vector<Index> remap(cells_.size(), 0);
     for (Index c : free_cells_) remap[c] = kNone;
@@ -368,6 +382,8 @@ private:
       if (remap[c] == kNone) continue;
       Cell cell = cells_[c];
       for (Index& n : cell.n) n = remap[n];
+      for (Index& v : cell.v)
+        if (v != kInfinite) v = input_[v];
       cells_[remap[c]] = cell;
     }
     cells_.resize(next);

@@ -42,8 +42,12 @@ struct PredicateStats {
 
 class Kernel {
 public:
-  // `weights` may be null (unweighted: all weights zero). Arrays are borrowed.
-  Kernel(const Vec3* points, const double* weights) : pts_(points), w_(weights) {}
+  // `weights` may be null (unweighted: all weights zero). `ids`, if given,
+  // is each point's input index, which orders the perturbation (a builder
+  // that stores the points in another order); null: the position itself.
+  // Arrays are borrowed.
+  Kernel(const Vec3* points, const double* weights, const Index* ids = nullptr)
+      : pts_(points), w_(weights), ids_(ids) {}
 
   // Sign of det[b-a, c-a, d-a]: +1 when d lies on the side of plane abc
   // from which a,b,c appear counter-clockwise. Exact, may be 0.
@@ -74,6 +78,7 @@ public:
 private:
   const Vec3* pts_;
   const double* w_;
+  const Index* ids_;
   PredicateStats stats_;
 
   double weight(Index i) const { return w_ ? w_[i] : 0.0; }
