@@ -31,7 +31,7 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   const double mx = std::max({std::fabs(ux), std::fabs(vx), std::fabs(wx)});
   const double my = std::max({std::fabs(uy), std::fabs(vy), std::fabs(wy)});
   const double mz = std::max({std::fabs(uz), std::fabs(vz), std::fabs(wz)});
-  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz)) return 2;
+  if (!in_filter_range(std::min({mx, my, mz})) || !in_filter_range(std::max({mx, my, mz}))) return 2;
   const double eps = kOrientBound * mx * my * mz;
   if (det > eps) return 1;
   if (det < -eps) return -1;
@@ -41,12 +41,13 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 // Written out row by row: this is the hottest function of the construction,
 // and the unweighted instance drops the weight terms at compile time.
 template <bool kWeighted>
-int filtered_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
+[[gnu::always_inline]] inline int filtered_power_det(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3,
+                                                    const double w[4], const Vec3& p, double wp) {
   auto dw = [&](int i) { return kWeighted ? w[i] - wp : 0.0; };
-  const double x0 = q[0]->x - p.x, y0 = q[0]->y - p.y, z0 = q[0]->z - p.z, d0 = dw(0);
-  const double x1 = q[1]->x - p.x, y1 = q[1]->y - p.y, z1 = q[1]->z - p.z, d1 = dw(1);
-  const double x2 = q[2]->x - p.x, y2 = q[2]->y - p.y, z2 = q[2]->z - p.z, d2 = dw(2);
-  const double x3 = q[3]->x - p.x, y3 = q[3]->y - p.y, z3 = q[3]->z - p.z, d3 = dw(3);
+  const double x0 = q0.x - p.x, y0 = q0.y - p.y, z0 = q0.z - p.z, d0 = dw(0);
+  const double x1 = q1.x - p.x, y1 = q1.y - p.y, z1 = q1.z - p.z, d1 = dw(1);
+  const double x2 = q2.x - p.x, y2 = q2.y - p.y, z2 = q2.z - p.z, d2 = dw(2);
+  const double x3 = q3.x - p.x, y3 = q3.y - p.y, z3 = q3.z - p.z, d3 = dw(3);
   const double s0 = x0 * x0 + y0 * y0 + z0 * z0, s1 = x1 * x1 + y1 * y1 + z1 * z1;
   const double s2 = x2 * x2 + y2 * y2 + z2 * z2, s3 = x3 * x3 + y3 * y3 + z3 * z3;
   const double h0 = s0 - d0, h1 = s1 - d1, h2 = s2 - d2, h3 = s3 - d3;
@@ -62,7 +63,8 @@ int filtered_power_det(const Vec3* const q[4], const double w[4], const Vec3& p,
   const double my = std::max(std::max(std::fabs(y0), std::fabs(y1)), std::max(std::fabs(y2), std::fabs(y3)));
   const double mz = std::max(std::max(std::fabs(z0), std::fabs(z1)), std::max(std::fabs(z2), std::fabs(z3)));
   const double mh = std::max(std::max(s0 + std::fabs(d0), s1 + std::fabs(d1)), std::max(s2 + std::fabs(d2), s3 + std::fabs(d3)));
-  if (!in_filter_range(mx) || !in_filter_range(my) || !in_filter_range(mz) || !in_filter_range(mh)) return 2;
+  // mh >= mx^2, my^2, mz^2: its upper limit bounds them too.
+  if (!in_filter_range(std::min({mx, my, mz, mh})) || !(mh < 1e60)) return 2;
   const double eps = kPowerBound * mx * my * mz * mh;
   if (det > eps) return 1;
   if (det < -eps) return -1;
@@ -93,12 +95,6 @@ int Kernel::orient3d(Index a, Index b, Index c, Index d) {
   return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]);
 }
 
-int Kernel::power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p, double wp,
-                           bool& filtered) {
-  const int s = w_ ? filtered_power_det<true>(q, wq, p, wp) : filtered_power_det<false>(q, wq, p, wp);
-  filtered = s != 2;
-  return filtered ? s : exact::power_det(q, wq, p, wp);
-}
 
 // With the weight of point i raised by eps_i, the lifted determinant D (p
 // conflicts when D < 0) changes by -eps_i * cofactor_i, and the cofactor of a
@@ -120,22 +116,37 @@ bool Kernel::perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3&
   return true;  // p has the largest remaining perturbation: its weight wins
 }
 
-bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
-  bool filtered;
-  const int s = power_det_sign(q, wq, pts_[p], weight(p), filtered);
+bool Kernel::exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
+  const int s = exact::power_det(q, wq, pts_[p], weight(p));
   if (s != 0) {
-    ++(filtered ? stats_.power.filtered : stats_.power.exact);
+    ++stats_.power.exact;
     return s < 0;
   }
   ++stats_.power.perturbed;
   return perturbed_conflict(q, id, pts_[p], p);
 }
 
+bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
+  const int s = w_ ? filtered_power_det<true>(*q[0], *q[1], *q[2], *q[3], wq, pts_[p], weight(p))
+                   : filtered_power_det<false>(*q[0], *q[1], *q[2], *q[3], wq, pts_[p], 0.0);
+  if (s == 2) return exact_conflict(q, wq, id, p);
+  ++stats_.power.filtered;
+  return s < 0;
+}
+
+// The hottest predicate: the filter reads the points in place, and the arrays
+// the exact stage takes are built only when it cannot decide.
 bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
-  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
   const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
+  const int s = w_ ? filtered_power_det<true>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], weight(p))
+                   : filtered_power_det<false>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], 0.0);
+  if (s != 2) {
+    ++stats_.power.filtered;
+    return s < 0;
+  }
+  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
   const Index id[4] = {a, b, c, d};
-  return cell_conflict(q, wq, id, p);
+  return exact_conflict(q, wq, id, p);
 }
 
 bool Kernel::hull_conflict(Index a, Index b, Index c, Index p) {

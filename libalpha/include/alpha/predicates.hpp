@@ -82,11 +82,10 @@ private:
   PredicateStats stats_;
 
   double weight(Index i) const { return w_ ? w_[i] : 0.0; }
-  // Unperturbed sign of the lifted determinant; conflict when negative.
-  int power_det_sign(const Vec3* q[4], const double wq[4], const Vec3& p,
-                     double wp, bool& filtered);
   // Filter, exact, then perturbed conflict test of a positive cell q.
   bool cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
+  // Its exact and perturbed stages, when the filter cannot decide.
+  bool exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   bool perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p,
                           Index pid);
 };
