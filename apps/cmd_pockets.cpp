@@ -218,7 +218,7 @@ void log_sites(const molecule::Structure& structure, const molecule::Cavities& c
   for (const molecule::Site& s : cavities.sites) {
     const molecule::Cavity& c = cavities.cavity(s);
     spdlog::debug("site {}: {}, score {:.3g}, SA volume {:.1f} A^3, centre ({:.2f}, {:.2f}, {:.2f})", ++rank,
-                  molecule::site_cavity_name(s), c.score, c.sa_volume, c.center.x, c.center.y, c.center.z);
+                  molecule::site_cavity_name(s), c.score, c.sa_volume, s.center.x, s.center.y, s.center.z);
     spdlog::trace("site {} lining residues: {}", rank,
                   residue_list(structure.atoms, c.lining_atoms, std::string::npos));
   }

@@ -224,7 +224,8 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   check_cavities(j["pockets"], cav.pockets, "pocket", r.structure);
   check_cavities(j["voids"], cav.voids, "void", r.structure);
 
-  // Each site names its cavity, whose score and centre it repeats.
+  // Each site names its cavity, whose score it repeats, and gives its
+  // (cluster's) centre.
   REQUIRE(j["sites"].size() == cav.sites.size());
   for (std::size_t i = 0; i < cav.sites.size(); ++i) {
     const json& site = j["sites"][i];
@@ -233,7 +234,10 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
     CHECK(site["kind"] == (cav.sites[i].is_void ? "void" : "pocket"));
     CHECK(site["cavity_rank"] == cav.sites[i].index + 1);
     const json& cavity = j[cav.sites[i].is_void ? "voids" : "pockets"].at(cav.sites[i].index);
-    for (const char* key : {"score", "sa_volume", "center", "lining_residues"}) CHECK(site[key] == cavity[key]);
+    for (const char* key : {"score", "sa_volume", "lining_residues"}) CHECK(site[key] == cavity[key]);
+    const alpha::Vec3& c = cav.sites[i].center;
+    const double xyz[] = {c.x, c.y, c.z};
+    for (int k = 0; k < 3; ++k) CHECK(site["center"][k].get<double>() == Approx(xyz[k]).margin(1e-3));
   }
 
   REQUIRE(j["tunnels"].size() == cav.tunnels.size());

@@ -34,6 +34,8 @@ HIT = 4.0    # A, DCC and DCA
 MERGE = 1.7  # A, residues of one ligand
 SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void that can be a site
 MIN_SITE_PROBABILITY = 0.03   # molecule::kMinSiteProbability: candidates below it are no sites
+CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
+CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
 LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
 TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
 
@@ -131,20 +133,40 @@ def table(structures):
             np.array(centers), ids, np.array(cpp))
 
 
-def figures(structures, group, sites, log_score, centers, key):
+def cluster_centers(centers, prob):
+    """molecule::cluster_site_centers: the centres of sites in rank order (centres and probabilities in that
+    order). Best first, a site no better one has taken takes the lower-ranked ones not yet taken within
+    CLUSTER_RADIUS whose probability is at least CLUSTER_SHARE of its own; its centre becomes their
+    probability-weighted mean (its own included)."""
+    out, taken = centers.copy(), np.zeros(len(centers), bool)
+    for i in range(len(centers)):
+        if taken[i]:
+            continue
+        near = np.linalg.norm(centers - centers[i], axis=1) <= CLUSTER_RADIUS
+        members = np.where(near & ~taken & (prob >= CLUSTER_SHARE * prob[i]) & (np.arange(len(centers)) > i))[0]
+        if len(members):
+            taken[members] = True
+            m = np.concatenate([[i], members])
+            out[i] = (prob[m, None] * centers[m]).sum(axis=0) / prob[m].sum()
+    return out
+
+
+def figures(structures, group, sites, log_score, centers, key, prob=None):
     """DCC and DCA at top-1 and top-3 of the sites (a mask) ranked by `key` (larger first; ties: the
-    geometric order, by log_score, then pockets before voids, each in its order: the rows' order)."""
+    geometric order, by log_score, then pockets before voids, each in its order: the rows' order); with
+    `prob` (the probability ranking), at their clusters' centres."""
     hits = {"dcc": [0, 0], "dca": [0, 0]}
     total = 0
     for g, (name, _, _, ligands) in enumerate(structures):
         idx = np.where((group == g) & sites)[0]
         idx = idx[np.argsort(-log_score[idx], kind="stable")]         # geometric order first
         idx = idx[np.argsort(-key[idx], kind="stable")]
+        ranked = centers[idx] if prob is None else cluster_centers(centers[idx], prob[idx])
         total += len(ligands)
         for l in ligands:
             for crit in ("dcc", "dca"):
                 for t, k in enumerate((1, 3)):
-                    top = centers[idx[:k]]
+                    top = ranked[:k]
                     if crit == "dcc":
                         ok = any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for c in top)
                     else:
@@ -274,9 +296,9 @@ def main():
     # The sites: the candidates alphapocket keeps (out of fold on pockets-train).
     sites, dsites = candidate & (oof_p >= MIN_SITE_PROBABILITY), dcandidate & (dp >= MIN_SITE_PROBABILITY)
     log_score, dlog_score = X[:, names.index("log_score")], dX[:, names.index("log_score")]
-    cv, n_train = figures(train, group, sites, log_score, centers, oof)
+    cv, n_train = figures(train, group, sites, log_score, centers, oof, oof_p)
     cv_geo, _ = figures(train, group, sites, log_score, centers, log_score)
-    dv, n_dev = figures(dev, dgroup, dsites, dlog_score, dcenters, dm)
+    dv, n_dev = figures(dev, dgroup, dsites, dlog_score, dcenters, dm, dp)
     dv_geo, _ = figures(dev, dgroup, dsites, dlog_score, dcenters, dlog_score)
     fmt = lambda f: f"DCC {f['dcc'][0]:.3f} / {f['dcc'][1]:.3f}  DCA {f['dca'][0]:.3f} / {f['dca'][1]:.3f}"
     for label, structures, g_, cand, s_, c_ in (("pockets-train", train, group, candidate, sites, centers),

@@ -38,7 +38,7 @@ json report_rows(const json& report) {
   for (const json& s : report.at("sites")) {
     const std::string kind = s.at("kind");
     const json& c = report.at(kind == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
-    const json& center = c.at("center");
+    const json& center = s.at("center");  // the site's (its cluster's), not always its cavity's
     sites.push_back({s.at("rank"), kind, s.at("cavity_rank"), c.at("score"), c.at("probability"), c.at("sa_volume"), c.at("ms_volume"),
                      c.at("sa_area"), c.at("ms_area"), c.at("depth"), c.at("mouths"), c.at("mouth_area"),
                      c.at("buriedness"), c.at("burial_atoms"), c.at("max_probe_radius"), center[0], center[1],

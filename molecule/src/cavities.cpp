@@ -322,9 +322,9 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
 
 std::vector<Site> site_candidates(const Cavities& cavities) {
   std::vector<Site> sites;
-  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i});
+  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i, cavities.pockets[i].center});
   for (std::size_t i = 0; i < cavities.voids.size(); ++i)
-    if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i});
+    if (cavities.voids[i].sa_volume >= kLigandSiteVolume) sites.push_back({true, i, cavities.voids[i].center});
   return sites;
 }
 

@@ -161,7 +161,7 @@ json site_list(const PocketRun& run, const json& ligands) {
                    {"score", score(c.score)},
                    {"probability", probability(c.probability)},
                    {"sa_volume", length(c.sa_volume)},
-                   {"center", point(c.center)},
+                   {"center", point(s.center)},
                    {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
                    {"lining_residues", lining_residues(run.structure->atoms, c.lining_atoms)},
                    {"ligands", std::move(held)}});

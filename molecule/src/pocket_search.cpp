@@ -9,6 +9,7 @@
 #include "alpha/error.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/ligandability_model.hpp"
+#include "molecule/site_clusters.hpp"
 #include "molecule/site_features.hpp"
 
 namespace molecule {
@@ -44,10 +45,12 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
       c.probability = model.probability(c.ligandability);
     }
   std::erase_if(cav.sites, [&](const Site& s) { return !(cav.cavity(s).probability >= kMinSiteProbability); });
-  if (ranking == SiteRanking::probability)
+  if (ranking == SiteRanking::probability) {
     std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
       return cav.cavity(a).ligandability > cav.cavity(b).ligandability;
     });
+    cluster_site_centers(cav);
+  }
   out.ranking_seconds = seconds_since(ranking_start);
   return out;
 }

@@ -35,7 +35,7 @@ for row, site in zip(rows, sites):
         "cavity_rank": site["cavity_rank"], "score": cavity["score"], "sa_volume": cavity["sa_volume"],
         "ms_volume": cavity["ms_volume"], "sa_area": cavity["sa_area"], "ms_area": cavity["ms_area"],
         "depth": cavity["depth"], "mouths": cavity["mouths"], "mouth_area": cavity["mouth_area"],
-        "center_x": cavity["center"][0], "center_y": cavity["center"][1], "center_z": cavity["center"][2],
+        "center_x": site["center"][0], "center_y": site["center"][1], "center_z": site["center"][2],
         "lining_residues": len(site["lining_residues"]),
         "residues": " ".join(r["id"] for r in site["lining_residues"]),
         "ligands": " ".join(site["ligands"]),

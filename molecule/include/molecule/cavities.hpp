@@ -149,6 +149,10 @@ struct Tunnel {
 struct Site {
   bool is_void = false;
   std::size_t index = 0;  // into Cavities::pockets, or Cavities::voids if is_void
+  // Where the site's ligand is expected: the cavity's centre, or, ranked
+  // by probability, the centre of the cluster the site heads
+  // (molecule/site_clusters.hpp).
+  alpha::Vec3 center{};
 };
 
 // "pocket 3", "void 1": the cavity a site is, by its rank in its list.

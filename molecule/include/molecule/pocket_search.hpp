@@ -39,7 +39,8 @@ inline constexpr double kMinSiteProbability = 0.03;
 
 // Every pocket and void gets its ligandability and probability from the
 // default model (molecule/ligandability_model.hpp); the sites below
-// kMinSiteProbability are left out and the others ordered as `ranking` says. Throws alpha::Error for unusable input (e.g.
+// kMinSiteProbability are left out and the others ordered as `ranking` says
+// (by probability: with their clusters' centres, molecule/site_clusters.hpp). Throws alpha::Error for unusable input (e.g.
 // all atoms in one plane) or options (negative probe).
 PocketSearch search_pockets(const Structure& structure, const CavityOptions& options,
                             SiteRanking ranking = SiteRanking::probability);
