@@ -31,7 +31,7 @@ __all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", 
 _ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=1.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
                          keep_hetero=False, keep_cofactors=False, min_plddt=0.0, radii="", tunnels_from="auto",
                          tunnel_probe=0.9,
-                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels",
+                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,tunnels",
                          ranking="probability", max_input_mb=512)
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
 
@@ -171,7 +171,8 @@ def analyze(structure=None, **options):
     model, chains=[...], keep_hydrogens, keep_waters, keep_hetero (True, or
     residue codes: "ZN,HEM" or ["ZN", "HEM"]), keep_cofactors, min_plddt,
     radii (a radius file), tunnels_from="auto", tunnel_probe=0.9, pores,
-    mesh="ply", outputs="report,csv,pml,pdb,meshes,tunnels" (what write() writes; a subset),
+    mesh="ply", outputs="report,csv,pml,pdb,tunnels" (what write() writes: any of
+    report,csv,pml,pdb,meshes,tunnels, or "all"; the meshes only when named),
     ranking="probability" (sites by the ligandability model's probability,
     each site's .probability; "geometric": by .score), max_input_mb=512
     (larger structure files, after gzip decompression, raise

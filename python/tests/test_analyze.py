@@ -22,6 +22,15 @@ def test_write_equals_cli_files(pdb_analysis, tmp_path):
     written = pdb_analysis.write(tmp_path / "py")
     assert "report.json" in written and "pockets.csv" in written
     cmp = filecmp.dircmp(tmp_path / "cli", tmp_path / "py")
+    assert not cmp.left_only and not cmp.right_only and "meshes" not in cmp.common
+    assert not filecmp.cmpfiles(tmp_path / "cli", tmp_path / "py", cmp.common_files, shallow=False)[1]
+
+
+def test_write_all_equals_cli_files(tmp_path):
+    """outputs="all" writes the meshes too, as the CLI's --outputs all."""
+    cli("pockets", DATA / "1fkgA.pdb", "--outputs", "all", "-o", tmp_path / "cli", "-q")
+    alphapocket.analyze(DATA / "1fkgA.pdb", outputs="all").write(tmp_path / "py")
+    cmp = filecmp.dircmp(tmp_path / "cli", tmp_path / "py")
     assert not cmp.left_only and not cmp.right_only
     assert not filecmp.cmpfiles(tmp_path / "cli", tmp_path / "py", cmp.common_files, shallow=False)[1]
     meshes = sorted(p.name for p in (tmp_path / "cli" / "meshes").iterdir())
