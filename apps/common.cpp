@@ -69,7 +69,7 @@ CLI::Validator output_list() {
 }  // namespace
 
 void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where) {
-  sub.add_option("--outputs", list, "What to write to " + where + ": any of report,csv,pml,pdb,meshes,tunnels")
+  sub.add_option("--outputs", list, "What to write to " + where + ": any of report,csv,pml,pdb,meshes,tunnels, or all")
       ->type_name("LIST")
       ->capture_default_str()
       ->check(output_list());
