@@ -8,7 +8,8 @@
 # does it). Each target first replays its regression inputs
 # (fuzz/regressions/TARGET/: inputs that once found a bug), then fuzzes
 # for SECONDS from a seed corpus (tests/data) with the PDB/mmCIF
-# dictionary. The corpus grows in $FUZZ_CORPUS/TARGET (default: a
+# dictionary. The random seed is fixed ($FUZZ_SEED, default 1) so that a
+# CI run can be replayed; hunting runs set another one. The corpus grows in $FUZZ_CORPUS/TARGET (default: a
 # temporary directory, removed at the end); a crash, leak, timeout or
 # sanitizer report stops with exit 1, its input saved as
 # $FUZZ_ARTIFACTS/TARGET-crash-... (default: the current directory).
@@ -60,7 +61,7 @@ for target in "${targets[@]}"; do
   mkdir -p "$corpus" "$scratch/seeds/$target"
   for f in $(seeds "$target"); do cp "$f" "$scratch/seeds/$target/"; done
   echo "== $target: fuzzing for $seconds s"
-  if "$exe" $(options "$target") -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2560 \
+  if "$exe" $(options "$target") -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2560 \
       -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
       "$corpus" "$scratch/seeds/$target" >"$scratch/$target.log" 2>&1; then
     grep -E '^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)|^#[0-9]+.*DONE' "$scratch/$target.log" || true

@@ -263,69 +263,69 @@ std::size_t loop_value_line(std::string_view text, std::size_t loop_line, std::s
   return loop_line;
 }
 
+// The _atom_site columns gemmi requires (mmcif.hpp, make_structure_from_block;
+// label/auth_comp_id and label/auth_atom_id it checks itself): without one it
+// reads no atoms at all, without saying why.
+constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_alt_id", "label_asym_id",  "Cartn_x",
+                                             "Cartn_y", "Cartn_z",     "occupancy",    "B_iso_or_equiv", "auth_seq_id"};
+
 // gemmi converts the _atom_site values it reads (a single character, an
 // integer, a number) without saying where a bad one is, and reads a
-// coordinate that is not a number as NaN, so the loop is checked here
-// first, each bad value named with its line and its text. Unknown element
-// symbols are noted.
-void check_atom_site(const gemmi::cif::Block& block, std::string_view text, const std::string& name,
+// coordinate that is not a number as NaN, so its table is checked here
+// first, each bad value named with its line and its text. The table is
+// found as gemmi finds it (the loop holding _atom_site.id if it has every
+// required column, else pair items), so no other loop hides a bad value.
+// Unknown element symbols are noted.
+void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std::string& name,
                      UnknownElements& unknown) {
-  const gemmi::cif::Item* item = nullptr;
-  for (const gemmi::cif::Item& i : block.items)
-    if (i.type == gemmi::cif::ItemType::Loop && !i.loop.tags.empty() &&
-        equals_ci(std::string_view(i.loop.tags[0]).substr(0, 11), "_atom_site."))
-      item = &i;
-  if (!item) return;
-  const gemmi::cif::Loop& loop = item->loop;
-  const auto column = [&](std::string_view tag) -> std::optional<std::size_t> {
-    std::string lower = "_atom_site.";
-    for (const char c : tag) lower += char(std::tolower(static_cast<unsigned char>(c)));
-    for (std::size_t c = 0; c < loop.tags.size(); ++c)
-      if (equals_ci(loop.tags[c], lower)) return c;
-    return std::nullopt;
+  std::vector<std::string> tags(std::begin(kRequiredAtomSite), std::end(kRequiredAtomSite));
+  enum { kSymbol = 1, kAlt = 2, kX = 4, kAuthSeq = 9, kIcode, kLabelSeq, kCharge };
+  for (const char* optional : {"?pdbx_PDB_ins_code", "?label_seq_id", "?pdbx_formal_charge"}) tags.emplace_back(optional);
+  gemmi::cif::Table table = block.find("_atom_site.", tags);
+  if (!table.ok()) return;
+  const gemmi::cif::Item* loop = table.loop_item;
+  const auto line_of = [&](std::size_t row, std::size_t col) {
+    const std::size_t position = std::size_t(table.positions[col]);
+    return loop ? loop_value_line(text, std::size_t(loop->line_number), loop->loop.width(),
+                                  row * loop->loop.width() + position)
+                : std::size_t(block.items[position].line_number);
   };
-  const std::size_t width = loop.width();
   const auto bad = [&](std::size_t row, std::size_t col, const std::string& what) {
-    const std::size_t line = loop_value_line(text, std::size_t(item->line_number), width, row * width + col);
-    fail(name, "line " + std::to_string(line) + ": " + loop.tags[col] + " is '" + loop.values[row * width + col] +
-                   "', " + what);
+    const std::string& tag = tags[col];
+    fail(name, "line " + std::to_string(line_of(row, col)) + ": _atom_site." + tag.substr(tag[0] == '?') + " is '" +
+                   table[int(row)][col] + "', " + what);
   };
-  const std::optional<std::size_t> alt = column("label_alt_id"), icode = column("pdbx_PDB_ins_code"),
-                                   auth_seq = column("auth_seq_id"), label_seq = column("label_seq_id"),
-                                   charge = column("pdbx_formal_charge"), symbol = column("type_symbol");
-  const std::optional<std::size_t> xyz[3] = {column("Cartn_x"), column("Cartn_y"), column("Cartn_z")};
-  for (std::size_t row = 0; row < loop.length(); ++row) {
-    const auto value = [&](std::size_t col) -> const std::string& { return loop.values[row * width + col]; };
-    for (const auto& c : {alt, icode})
-      if (c) try {
-          gemmi::cif::as_char(value(*c), ' ');
+  for (std::size_t row = 0; row < table.length(); ++row) {
+    const gemmi::cif::Table::Row values = table[int(row)];
+    for (const std::size_t c : {std::size_t(kAlt), std::size_t(kIcode)})
+      if (values.has(c)) try {
+          gemmi::cif::as_char(values[c], ' ');
         } catch (const std::exception&) {
-          bad(row, *c, "not a single character");
+          bad(row, c, "not a single character");
         }
-    for (const auto& c : {label_seq, charge})
-      if (c) try {
-          gemmi::cif::as_int(value(*c), 0);
+    for (const std::size_t c : {std::size_t(kLabelSeq), std::size_t(kCharge)})
+      if (values.has(c)) try {
+          gemmi::cif::as_int(values[c], 0);
         } catch (const std::exception&) {
-          bad(row, *c, "not an integer");
+          bad(row, c, "not an integer");
         }
-    if (auth_seq) try {
-        gemmi::impl::make_seqid(value(*auth_seq), icode ? &value(*icode) : nullptr);
-      } catch (const std::exception&) {
-        bad(row, *auth_seq, "not a residue number (an integer, optionally followed by the insertion code)");
-      }
-    for (const auto& c : xyz) {
-      if (!c) continue;
-      const std::string& v = value(*c);
+    try {
+      gemmi::impl::make_seqid(values[kAuthSeq], values.has(kIcode) ? &values[kIcode] : nullptr);
+    } catch (const std::exception&) {
+      bad(row, kAuthSeq, "not a residue number (an integer, optionally followed by the insertion code)");
+    }
+    for (std::size_t c = kX; c < kX + 3; ++c) {
+      const std::string& v = values[c];
       const double x = gemmi::cif::as_number(v);
       if (gemmi::cif::is_null(v))
-        bad(row, *c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
-      if (std::isnan(x)) bad(row, *c, "not a number");
-      if (!(std::fabs(x) <= kMaxCoordinate)) bad(row, *c, "beyond 1e6 A");
+        bad(row, c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
+      if (std::isnan(x)) bad(row, c, "not a number");
+      if (!(std::fabs(x) <= kMaxCoordinate)) bad(row, c, "beyond 1e6 A");
     }
-    if (symbol && !gemmi::cif::is_null(value(*symbol))) {
-      const std::string element = gemmi::cif::as_string(value(*symbol));
+    if (!gemmi::cif::is_null(values[kSymbol])) {
+      const std::string element = gemmi::cif::as_string(values[kSymbol]);
       if (gemmi::find_element(element.c_str()) == gemmi::El::X && !unknown.count(element))
-        unknown.emplace(element, loop_value_line(text, std::size_t(item->line_number), width, row * width + *symbol));
+        unknown.emplace(element, line_of(row, kSymbol));
     }
   }
 }
@@ -344,12 +344,6 @@ std::string one_line(std::string s, const std::string& name) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s.find(name) == std::string::npos ? name + ": " + s : s;
 }
-
-// The _atom_site columns gemmi requires (mmcif.hpp, make_structure_from_block;
-// label/auth_comp_id and label/auth_atom_id it checks itself): without one it
-// reads no atoms at all, without saying why.
-constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_alt_id", "label_asym_id",  "Cartn_x",
-                                             "Cartn_y", "Cartn_z",     "occupancy",    "B_iso_or_equiv", "auth_seq_id"};
 
 // The required columns a block's _atom_site lacks; none if it has no _atom_site.
 std::vector<std::string> missing_atom_site_columns(gemmi::cif::Block& block) {
