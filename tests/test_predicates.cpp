@@ -121,3 +121,37 @@ TEST_CASE("Hull conflict: outside, inside, and coplanar inside the circle", "[pr
   CHECK(k.hull_conflict(0, 1, 2, 5));        // coplanar, inside the circumcircle
   CHECK_FALSE(k.hull_conflict(0, 1, 2, 6));  // coplanar, far outside it
 }
+
+TEST_CASE("Integer input decided in doubles agrees with the dyadic stages", "[predicates][degenerate]") {
+  // The same configurations scaled by 2^-3 (weights by 2^-6) are not
+  // integers and go through the dyadic stages; scaling by a power of two
+  // keeps every sign, so every answer, perturbed ones included, must match.
+  // Coordinates up to 600 also exercise the 2^9 bound of the double stage.
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> near(-3, 3), far(-600, 600);
+  int perturbed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<Vec3> p(5), scaled(5);
+    std::vector<double> w(5), scaled_w(5);
+    const bool wide = trial % 5 == 0;
+    for (int i = 0; i < 5; ++i) {
+      auto c = [&] { return double(wide ? far(rng) : near(rng)); };
+      p[i] = {c(), c(), c()};
+      w[i] = trial % 2 ? double(near(rng)) : 0.0;
+      scaled[i] = {p[i].x / 8, p[i].y / 8, p[i].z / 8};
+      scaled_w[i] = w[i] / 64;
+    }
+    Kernel k(p.data(), w.data()), ks(scaled.data(), scaled_w.data());
+    // p = point 0, below the cell's points in the perturbation order, so
+    // that a tie is decided by the cell's cofactors.
+    const int o = k.orient3d(1, 2, 3, 4);
+    REQUIRE(o == ks.orient3d(1, 2, 3, 4));
+    if (o == 0) continue;
+    const Index a = o > 0 ? 1 : 2, b = o > 0 ? 2 : 1;
+    CHECK(k.power_side_exact(a, b, 3, 4, 0) == ks.power_side_exact(a, b, 3, 4, 0));
+    CHECK(k.power_conflict(a, b, 3, 4, 0) == ks.power_conflict(a, b, 3, 4, 0));
+    perturbed += int(k.stats().power.perturbed);
+    CHECK(k.stats().power.perturbed == ks.stats().power.perturbed);
+  }
+  CHECK(perturbed > 20);  // ties were common enough to test the perturbation
+}

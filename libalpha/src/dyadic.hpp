@@ -4,7 +4,6 @@
 #pragma once
 #include <bit>
 #include <climits>
-#include <cmath>
 #include <cstdint>
 
 namespace alpha {
@@ -17,12 +16,21 @@ struct Dyadic {
   int e = INT_MAX;
 };
 
+// Read from the bits (frexp and ldexp are library calls, and the exact
+// stages split up to 20 values a call); finite values only.
 inline Dyadic split(double v) {
-  if (v == 0) return {};
-  int e;
-  const auto m = static_cast<std::int64_t>(std::ldexp(std::frexp(v, &e), 53));
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  auto m = static_cast<std::int64_t>(bits & ((std::uint64_t(1) << 52) - 1));
+  if (biased == 0 && m == 0) return {};
+  int e = -1074;  // subnormal: no implicit bit
+  if (biased != 0) {
+    m |= std::int64_t(1) << 52;
+    e = biased - 1075;
+  }
   const int tz = std::countr_zero(static_cast<std::uint64_t>(m));
-  return {m >> tz, e - 53 + tz};
+  m >>= tz;
+  return {bits >> 63 ? -m : m, e + tz};
 }
 
 }  // namespace alpha

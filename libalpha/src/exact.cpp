@@ -59,10 +59,31 @@ template <class T> T det4(const T r[4][4]) {
          r[3][3] * minor(0, 1, 2);
 }
 
+// Integer input (grids of unit spacing, integer coordinates and weights):
+// whether v is an integer (adding and removing 1.5 * 2^52 rounds it to one;
+// integers beyond 2^51 may be missed, which only sends them to the stages
+// below). Differences of integers that come out small are exact.
+bool is_integer(double v) {
+  constexpr double kRound = 0x1.8p52;
+  return (v + kRound) - kRound == v;
+}
+
+bool is_integer(const Vec3& v) { return is_integer(v.x) & is_integer(v.y) & is_integer(v.z); }
+
 }  // namespace
 
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3* v[4] = {&a, &b, &c, &d};
+  // Integers with differences below 2^16: each product of three is below
+  // 2^48 and the sum of six below 2^51, so doubles are exact.
+  if (is_integer(a) & is_integer(b) & is_integer(c) & is_integer(d)) {
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
+    const double m = std::max({std::fabs(ux), std::fabs(uy), std::fabs(uz), std::fabs(vx), std::fabs(vy),
+                               std::fabs(vz), std::fabs(wx), std::fabs(wy), std::fabs(wz)});
+    if (m < 0x1p16) return sign(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx));
+  }
   Dyadic s[12];
   for (int i = 0; i < 4; ++i) {
     s[3 * i] = split(v[i]->x);
@@ -82,7 +103,32 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return sgn(mpz_class(det3(r[0], r[1], r[2])));
 }
 
+bool small_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp, int& det,
+                     int orient[4]) {
+  if (!(is_integer(*q[0]) & is_integer(*q[1]) & is_integer(*q[2]) & is_integer(*q[3]) & is_integer(p) &
+        is_integer(w[0]) & is_integer(w[1]) & is_integer(w[2]) & is_integer(w[3]) & is_integer(wp)))
+    return false;
+  double r[4][4];
+  bool small = true;
+  for (int i = 0; i < 4; ++i) {
+    const double x = q[i]->x - p.x, y = q[i]->y - p.y, z = q[i]->z - p.z, dw = w[i] - wp;
+    small = small & (std::fabs(x) < 0x1p9) & (std::fabs(y) < 0x1p9) & (std::fabs(z) < 0x1p9) &
+            (std::fabs(dw) < 0x1p19);
+    r[i][0] = x, r[i][1] = y, r[i][2] = z, r[i][3] = x * x + y * y + z * z - dw;
+  }
+  if (!small) return false;
+  // det[q_i - p, q_j - p, q_k - p]; orient3d of the cell with q_k replaced
+  // by p is (-1)^k times the minor of the other three (in order).
+  const auto minor = [&](int i, int j, int k) { return det3(r[i], r[j], r[k]); };
+  const double m123 = minor(1, 2, 3), m023 = minor(0, 2, 3), m013 = minor(0, 1, 3), m012 = minor(0, 1, 2);
+  det = sign(-r[0][3] * m123 + r[1][3] * m023 - r[2][3] * m013 + r[3][3] * m012);
+  orient[0] = sign(m123), orient[1] = -sign(m023), orient[2] = sign(m013), orient[3] = -sign(m012);
+  return true;
+}
+
 int power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
+  int det, orient[4];
+  if (small_power_det(q, w, p, wp, det, orient)) return det;
   Dyadic c[15], ws[5];
   for (int i = 0; i < 4; ++i) {
     c[3 * i] = split(q[i]->x);

@@ -2,7 +2,8 @@
 // Exact evaluation of the determinant signs behind the predicates.
 // Doubles are exact dyadic numbers m*2^e; shifting all values of one call to
 // a common exponent turns them into integers, evaluated in 128-bit integers
-// when they are small enough (grids, integer input) and in GMP otherwise.
+// when they are small enough and in GMP otherwise. Integer input near p
+// (grids) is decided in doubles first, where that is exact.
 #pragma once
 #include "alpha/geometry.hpp"
 
@@ -13,5 +14,15 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 // Sign of det of rows (q_i - p, |q_i - p|^2 - (w_i - w_p)), i = 0..3.
 int power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp);
+
+// The first stage of power_det, for integer input (grids of unit spacing,
+// integer coordinates and weights) with every q_i within 2^9 of p and
+// weights within 2^19 of p's: the lifted values are then below 2^21, the
+// 3x3 minors below 2^30, each term below 2^51 and the sum below 2^53, so
+// doubles are exact. Sets the sign of the determinant and, for k = 0..3,
+// orient[k] = sign of orient3d of the q's with q_k replaced by p (what the
+// perturbation asks for), from the same minors. False when the input is not
+// such.
+bool small_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp, int& det, int orient[4]);
 
 }  // namespace alpha::exact

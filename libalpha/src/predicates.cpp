@@ -98,32 +98,39 @@ int Kernel::orient3d(Index a, Index b, Index c, Index d) {
 
 // With the weight of point i raised by eps_i, the lifted determinant D (p
 // conflicts when D < 0) changes by -eps_i * cofactor_i, and the cofactor of a
-// cell vertex is -orient3d(cell with that vertex replaced by p). The largest
-// eps belongs to the largest index; p's own cofactor is -orient3d(cell) < 0,
-// so the loop always ends. A virtual vertex (kNone) has no perturbation.
-bool Kernel::perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p, Index pid) {
+// cell vertex is -orient3d(cell with that vertex replaced by p), given by
+// orient_with_p(k). The largest eps belongs to the largest index; p's own
+// cofactor is -orient3d(cell) < 0, so the loop always ends. A virtual vertex
+// (kNone) has no perturbation.
+template <class OrientWithP>
+bool Kernel::perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p) {
   int order[4] = {0, 1, 2, 3};
   auto input_index = [&](Index i) { return static_cast<long long>(ids_ ? ids_[i] : i); };
   auto rank = [&](int k) { return id[k] == kNone ? -1 : input_index(id[k]); };
   std::sort(order, order + 4, [&](int x, int y) { return rank(x) > rank(y); });
   for (int k : order) {
     if (rank(k) < input_index(pid)) break;
-    const Vec3* r[4] = {q[0], q[1], q[2], q[3]};
-    r[k] = &p;
-    const int o = orient3d(*r[0], *r[1], *r[2], *r[3]);
+    const int o = orient_with_p(k);
     if (o != 0) return o < 0;
   }
   return true;  // p has the largest remaining perturbation: its weight wins
 }
 
 bool Kernel::exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
-  const int s = exact::power_det(q, wq, pts_[p], weight(p));
+  int s, orient[4];
+  const bool small = exact::small_power_det(q, wq, pts_[p], weight(p), s, orient);
+  if (!small) s = exact::power_det(q, wq, pts_[p], weight(p));
   if (s != 0) {
     ++stats_.power.exact;
     return s < 0;
   }
   ++stats_.power.perturbed;
-  return perturbed_conflict(q, id, pts_[p], p);
+  if (small) return perturbed_conflict(id, p, [&](int k) { return orient[k]; });
+  return perturbed_conflict(id, p, [&](int k) {
+    const Vec3* r[4] = {q[0], q[1], q[2], q[3]};
+    r[k] = &pts_[p];
+    return orient3d(*r[0], *r[1], *r[2], *r[3]);
+  });
 }
 
 bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {

@@ -86,8 +86,8 @@ private:
   bool cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   // Its exact and perturbed stages, when the filter cannot decide.
   bool exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
-  bool perturbed_conflict(const Vec3* q[4], const Index id[4], const Vec3& p,
-                          Index pid);
+  template <class OrientWithP>
+  bool perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p);
 };
 
 }  // namespace alpha
