@@ -75,10 +75,12 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
       if (set.empty()) break;
     }
     arcs_.insert(arcs_.end(), set.begin(), set.end());
+    for (const Arc& a : set)
+      arc_ends_.push_back({std::cos(a.begin), std::sin(a.begin), std::cos(a.begin + a.length), std::sin(a.begin + a.length)});
+    const auto bound = arc_bound(set, arc_ends_.data() + arc_start_[e], c);
+    arc_bounds_.insert(arc_bounds_.end(), set.size(), bound);
   }
   arc_start_[s.num_edges()] = arcs_.size();
-  for (const Arc& a : arcs_)
-    arc_ends_.push_back({std::cos(a.begin), std::sin(a.begin), std::cos(a.begin + a.length), std::sin(a.begin + a.length)});
 
   // Vertices: the two points where the spheres of a triangle of K meet,
   // kept when no apex of its two cells covers them (on its Voronoi edge).

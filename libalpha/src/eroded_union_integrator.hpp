@@ -176,6 +176,17 @@ inline bool contains(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends,
 }
 
 
+// A ball (centre, radius) holding the points of the arcs `set` of circle
+// c (ends: their end directions): about the chord of a single arc up to
+// half a turn, else the circle's.
+inline std::pair<Vec3, double> arc_bound(std::span<const Arc> set, const ErodedUnion::ArcEnds* ends, const Circle& c) {
+  if (set.size() != 1 || set[0].length > kPi) return {c.o, c.rho};
+  const ErodedUnion::ArcEnds& a = ends[0];
+  const double x = a.cos_begin + a.cos_end, y = a.sin_begin + a.sin_end;
+  const double dx = a.cos_end - a.cos_begin, dy = a.sin_end - a.sin_begin;
+  return {c.o + (c.rho / 2) * (x * c.e1 + y * c.e2), c.rho / 2 * std::sqrt(dx * dx + dy * dy)};
+}
+
 // A frame about the unit axis w (only w, e1, e2 set).
 inline Circle circle_of_axis(const Vec3& w) {
   Circle c;
@@ -315,6 +326,18 @@ struct ErodedUnion::Nearby::Hood {
   // The last point clear() found nearer: the next tests (nearby points)
   // try it first.
   mutable Nearer last;
+  // Every point clear() tests against it lies in a ball left out of it
+  // (see keep_at_r).
+  bool inside = false;
+  // Empty, to take the part of h that narrow() or keep_at_r() keeps.
+  void start_part_of(const Hood& h) {
+    balls.clear();
+    circles.clear();
+    arc_bounds.clear();
+    vertices.clear();
+    last = {};
+    inside = h.inside;
+  }
 };
 
 // The integrals of the pieces of one ErodedUnion.
@@ -465,12 +488,12 @@ public:
     const Hood& hood = piece_;
     // The points at r lie in the cap about the directions' mean that holds
     // the three (the cone is inside it when that is less than a quarter
-    // turn wide): within r sin(cap) of its disc's centre.
+    // turn wide): tested against what can be found from that cap.
     const Vec3 sum = dir[0] + dir[1] + dir[2], mean = (1 / norm(sum)) * sum;
     const double cos_cap = std::min({dot(mean, dir[0]), dot(mean, dir[1]), dot(mean, dir[2])});
     const Hood* near_r = &hood;
     if (cos_cap > 0) {
-      narrow(hood, vx.p + (r_ * cos_cap) * mean, r_ * std::sqrt((1 - cos_cap) * (1 + cos_cap)) + tol_, at_r_[0]);
+      keep_at_r(hood, vx.p, mean, cos_cap, at_r_[0]);
       near_r = &at_r_[0];
     }
     const auto clear_at_r = [&](double s, double sigma) {
@@ -565,17 +588,6 @@ private:
     return false;
   }
 
-  // A ball holding the points of edge e's arcs (circle c): about the
-  // chord of a single arc up to half a turn, else the circle's.
-  std::pair<Vec3, double> arc_bound(Index e, const Circle& c) const {
-    const std::span<const Arc> set = edge_arcs(e);
-    if (set.size() != 1 || set[0].length > kPi) return {c.o, c.rho};
-    const ArcEnds& a = eu_.arc_ends_[eu_.arc_start_[e]];
-    const double x = a.cos_begin + a.cos_end, y = a.sin_begin + a.sin_end;
-    const double dx = a.cos_end - a.cos_begin, dy = a.sin_end - a.sin_begin;
-    return {c.o + (c.rho / 2) * (x * c.e1 + y * c.e2), c.rho / 2 * std::sqrt(dx * dx + dy * dy)};
-  }
-
   // Whether clear() can find circle c (of edge e) at a point within
   // radius - r of x: through a point of its arcs nearer than r to that
   // point, or, for a circle smaller than r, through its axis.
@@ -600,6 +612,7 @@ private:
     h.vertices.clear();
     h.buried.clear();
     h.last = {};
+    h.inside = false;
     // Balls whose sphere is within radius: the ends of the circles.
     // Buried balls are left out of the pieces (a point inside one is
     // inside another, up to rounding), kept apart for nearest().
@@ -621,10 +634,13 @@ private:
       for (Index e : s_.vertex_edges(k)) {
         const auto& v = s_.edge(e);
         if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
+        // clear() finds a circle through a point of its arcs (see clear).
+        const auto& [m, b] = eu_.arc_bounds_[eu_.arc_start_[e]];
+        if (dot(center - m, center - m) >= (radius + b + tol_) * (radius + b + tol_)) continue;
         const Circle c = circle_of(t_, v);
         if (!circle_near(e, c, center, radius)) continue;
         h.circles.emplace_back(e, c);
-        h.arc_bounds.push_back(arc_bound(e, c));
+        h.arc_bounds.push_back(eu_.arc_bounds_[eu_.arc_start_[e]]);
       }
     eu_.vertex_grid_.visit(center, radius, [&](Index v) {
       if (norm(eu_.vertices_[v].p - center) < radius) h.vertices.push_back(v);
@@ -638,11 +654,7 @@ private:
   void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const { narrow(h, x, reach, r_, out); }
   void narrow(const Hood& h, const Vec3& x, double reach, double within, Hood& out) const {
     const double radius = reach + within + 2 * tol_;
-    out.balls.clear();
-    out.circles.clear();
-    out.arc_bounds.clear();
-    out.vertices.clear();
-    out.last = {};
+    out.start_part_of(h);
     for (const Hood::Ball& b : h.balls)
       if (ball_near(b, x, reach)) out.balls.push_back(b);
     for (std::size_t k = 0; k < h.circles.size(); ++k) {
@@ -656,6 +668,118 @@ private:
     }
     for (const std::size_t v : h.vertices)
       if (norm(eu_.vertices_[v].p - x) < radius) out.vertices.push_back(v);
+  }
+
+  // Into `out`, what of h clear() can find or be inside at points
+  // x = q + r u tested at distance r, u in a set of unit directions, in
+  // h's order. along(d): the least and largest u.d over the set; the
+  // points lie within `radius` of `mid`; reaches(k): whether circle k of h
+  // can be found there, once its arcs' ball is within reach. Left out by
+  // these bounds (with tol_ to spare for rounding): vertices and circles
+  // out of clear()'s reach everywhere, balls holding no point, and balls
+  // holding every point r deep (no point of them is found; they put every
+  // x in the union: out.inside). A vertex within r + tol_ of x is kept (a
+  // cone's coincident vertices, see clear).
+  template <class Along, class Reaches>
+  void keep_at_r(const Hood& h, const Vec3& q, const Along& along, const Vec3& mid, double radius,
+                 const Reaches& reaches, Hood& out) const {
+    // |x - y|^2 = |y - q|^2 + r^2 - 2 r u.(y - q).
+    const auto squared_range = [&](const Vec3& y) {
+      const Vec3 d = y - q;
+      const auto [least, most] = along(d);
+      const double base = dot(d, d) + r_ * r_;
+      return std::pair{base - 2 * r_ * most, base - 2 * r_ * least};
+    };
+    // First whether y is further than `reach` from every point.
+    const auto beyond = [&](const Vec3& y, double reach) {
+      const double d = radius + reach;
+      return dot(y - mid, y - mid) >= d * d;
+    };
+    out.start_part_of(h);
+    for (const Hood::Ball& b : h.balls) {
+      if (beyond(b.c, b.radius + tol_)) continue;
+      const auto [least, most] = squared_range(b.c);
+      if (least >= (b.radius + tol_) * (b.radius + tol_)) continue;  // never inside
+      if (b.radius >= r_ && most <= (b.radius - r_) * (b.radius - r_)) {  // inside, deeper than clear() looks
+        out.inside = true;
+        continue;
+      }
+      out.balls.push_back(b);
+    }
+    for (std::size_t k = 0; k < h.circles.size(); ++k) {
+      const auto& [m, b] = h.arc_bounds[k];
+      const double reach = r_ + b + 4 * tol_;
+      if (beyond(m, reach) || squared_range(m).first >= reach * reach || !reaches(k)) continue;
+      out.circles.push_back(h.circles[k]);
+      out.arc_bounds.push_back(h.arc_bounds[k]);
+    }
+    const double vertex_reach = r_ + 2 * tol_;
+    for (const std::size_t v : h.vertices) {
+      const Vec3& p = eu_.vertices_[v].p;
+      if (!beyond(p, vertex_reach) && squared_range(p).first < vertex_reach * vertex_reach) out.vertices.push_back(v);
+    }
+  }
+
+  // keep_at_r for an arc piece's row: x = q + r (cos psi e1 + sin psi e2),
+  // psi in [lo, hi] (less than half a turn).
+  void keep_at_r(const Hood& h, const Vec3& q, const Vec3& e1, const Vec3& e2, double lo, double hi, Hood& out) const {
+    const double cl = std::cos(lo), sl = std::sin(lo), ch = std::cos(hi), sh = std::sin(hi);
+    // The least and largest a cos psi + b sin psi: towards (a, b) and away
+    // from it when the arc holds those directions, else at an end.
+    const auto wave = [&](double a, double b) {
+      const double s = std::sqrt(a * a + b * b), at_lo = a * cl + b * sl, at_hi = a * ch + b * sh;
+      const double after_lo = cl * b - sl * a, before_hi = a * sh - b * ch;
+      return std::pair{after_lo <= 0 && before_hi <= 0 ? -s : std::min(at_lo, at_hi),
+                       after_lo >= 0 && before_hi >= 0 ? s : std::max(at_lo, at_hi)};
+    };
+    // The points lie within half the chord of its midpoint.
+    const Vec3 from = cl * e1 + sl * e2, to = ch * e1 + sh * e2;
+    keep_at_r(
+        h, q, [&](const Vec3& d) { return wave(dot(d, e1), dot(d, e2)); }, q + (r_ / 2) * (from + to),
+        r_ / 2 * norm(to - from) + tol_,
+        [&](std::size_t k) { return arcs_reach(h.circles[k].first, h.circles[k].second, q, e1, e2, wave); }, out);
+  }
+
+  // keep_at_r for a cone's points at r: u in the cap of directions within
+  // the angle acos(cos_cap) < pi / 2 of the unit `axis`.
+  void keep_at_r(const Hood& h, const Vec3& p, const Vec3& axis, double cos_cap, Hood& out) const {
+    const double sin_cap = std::sqrt((1 - cos_cap) * (1 + cos_cap));
+    // u.d = |d| cos(angle to d): largest at the angle nearest axis' to d,
+    // least at the furthest.
+    const auto along = [&](const Vec3& d) {
+      const double length = norm(d), c = dot(axis, d), s = norm(cross(axis, d));
+      return std::pair{-c >= length * cos_cap ? -length : c * cos_cap - s * sin_cap,
+                       c >= length * cos_cap ? length : c * cos_cap + s * sin_cap};
+    };
+    keep_at_r(h, p, along, p + (r_ * cos_cap) * axis, r_ * sin_cap + tol_, [](std::size_t) { return true; }, out);
+  }
+
+  // Whether clear() can find circle c (edge e) from a point of keep_at_r's
+  // arc (x = q + r (cos psi e1 + sin psi e2); wave(a, b): the range of
+  // a cos psi + b sin psi over it): only where x's direction about the
+  // axis, from the projection (px, py) of x in c's frame, is on an arc.
+  // That needs both sides of an arc up to half a turn ahead (one of a
+  // longer one) to be >= 0 somewhere; they are linear in (px, py), so of
+  // the form k + a cos psi + b sin psi. Where every one is below -tol_,
+  // (px, py) is also further than tol_ from the axis.
+  template <class Wave>
+  bool arcs_reach(Index e, const Circle& c, const Vec3& q, const Vec3& e1, const Vec3& e2, const Wave& wave) const {
+    const std::span<const Arc> set = edge_arcs(e);
+    const ArcEnds* ends = eu_.arc_ends_.data() + eu_.arc_start_[e];
+    const Vec3 d = q - c.o;
+    const double px = dot(d, c.e1), py = dot(d, c.e2);
+    const double ax = r_ * dot(e1, c.e1), bx = r_ * dot(e2, c.e1), ay = r_ * dot(e1, c.e2), by = r_ * dot(e2, c.e2);
+    // The largest cos_s py - sin_s px (s = 1) or px sin_s - py cos_s (s = -1).
+    const auto most = [&](double cs, double sn, double side) {
+      return side * (cs * py - sn * px) + wave(side * (cs * ay - sn * ax), side * (cs * by - sn * bx)).second;
+    };
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      if (full(set[k])) return true;
+      const bool after_begin = most(ends[k].cos_begin, ends[k].sin_begin, 1) >= -tol_;
+      const bool before_end = most(ends[k].cos_end, ends[k].sin_end, -1) >= -tol_;
+      if (set[k].length <= kPi ? after_begin && before_end : after_begin || before_end) return true;
+    }
+    return false;
   }
 
   // Whether p, a point of sphere k, lies on the union's boundary: in k's
@@ -743,7 +867,7 @@ private:
       if (kind != Nearer::kNone) h.last = {kind, which};
       return false;
     };
-    bool in_union = false;
+    bool in_union = h.inside;
     for (std::size_t k = 0; k < h.balls.size(); ++k) {
       bool inside;
       if (ball_finds(h.balls[k], x, limit, inside)) return found(Nearer::kBall, k);
@@ -840,9 +964,8 @@ private:
     const std::size_t none = eu_.vertices_.size();
     // Each node phi's points are within r of its circle point q: tested
     // against the part of the hood near q (its row). Those at r lie on an
-    // arc about q, psi from psi_i to psi_j (less than half a turn): within
-    // half its chord of the chord's midpoint, tested against the part of
-    // the hood near that.
+    // arc about q, psi from psi_i to psi_j (less than half a turn), tested
+    // against what can be found from that arc (keep_at_r).
     const auto clear_at_r = [&](const Hood& near, const Vec3& radial, double psi) {
       return clear(near, c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
     };
@@ -850,8 +973,7 @@ private:
     all_clear = true;
     for (int i = 0; i < 8; ++i) {
       const Vec3 radial = c.radial(node(begin, end, i));
-      const Vec3 a = c.ray(radial, psi_i), b = c.ray(radial, psi_j);
-      narrow(h, c.o + c.rho * radial + (r_ / 2) * (a + b), r_ / 2 * norm(b - a) + tol_, at_r_[i]);
+      keep_at_r(h, c.o + c.rho * radial, (-1.0) * radial, c.w, psi_i, psi_j, at_r_[i]);
       for (int j = 0; j < 8; ++j)
         all_clear = (at_r[i][j] = clear_at_r(at_r_[i], radial, node(psi_i, psi_j, j))) && all_clear;
     }

@@ -82,6 +82,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "alpha/point_grid.hpp"
@@ -202,6 +203,8 @@ private:
   std::vector<std::size_t> arc_start_;
   std::vector<Arc> arcs_;
   std::vector<ArcEnds> arc_ends_;  // per arc
+  // Per arc: a ball (centre, radius) holding all its edge's arcs.
+  std::vector<std::pair<Vec3, double>> arc_bounds_;
   // Per triangle: its vertices on the boundary (0 to 2), compressed rows.
   std::vector<std::size_t> vertex_start_;
   std::vector<Vertex> vertices_;
