@@ -342,7 +342,11 @@ std::string one_line(std::string s, const std::string& name) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   s = printable_ascii(s);  // gemmi quotes the record, bytes and all
   while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s.find(name) == std::string::npos ? name + ": " + s : s;
+  // Some end with ": NAME" ("Incorrect file format (perhaps it is cif not
+  // pdb?): NAME"); ours start with it.
+  const std::string suffix = ": " + name;
+  if (s.size() > suffix.size() && s.ends_with(suffix)) s.erase(s.size() - suffix.size());
+  return s.starts_with(name) ? s : name + ": " + s;
 }
 
 // The required columns a block's _atom_site lacks; none if it has no _atom_site.
