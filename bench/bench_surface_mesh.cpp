@@ -6,7 +6,9 @@
 // enclosed volume come to our analytic molecular (SES) area and volume.
 // bench/surface_mesh.sh runs it next to PyMOL (README there).
 //
-// Usage: bench_surface_mesh [--resolution H] FILE...
+// Usage: bench_surface_mesh [--resolution H] [--no-cgal] FILE...
+// (--no-cgal: ours alone, CGAL's columns 0: for the error against the
+// resolution, where CGAL's minutes per file are not wanted.)
 // One row per file: atoms, the analytic area and volume; ours: CPU
 // seconds from the atoms to the mesh (triangulation, alpha complex, union,
 // eroded union, mesh), the mesh part alone, its area and volume errors against the analytic ones; CGAL:
@@ -85,16 +87,19 @@ double percent(double value, double exact) { return 100 * (value - exact) / exac
 
 int main(int argc, char** argv) {
   double resolution = molecule::kDefaultMeshResolution;
+  bool cgal_too = true;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--resolution" && i + 1 < argc)
       resolution = std::atof(argv[++i]);
+    else if (a == "--no-cgal")
+      cgal_too = false;
     else
       files.push_back(a);
   }
   if (files.empty()) {
-    std::fprintf(stderr, "usage: bench_surface_mesh [--resolution H] FILE...\n");
+    std::fprintf(stderr, "usage: bench_surface_mesh [--resolution H] [--no-cgal] FILE...\n");
     return 2;
   }
   const int reps = std::getenv("REPS") ? std::max(1, std::atoi(std::getenv("REPS"))) : 3;
@@ -133,9 +138,10 @@ int main(int argc, char** argv) {
       const alpha::Vec3& p = balls.points[i];
       points.emplace_back(K::Point_3(p.x, p.y, p.z), r * r);
     }
-    std::vector<double> cgal;
-    Measures skin;
-    for (int k = 0; k < reps; ++k) {
+    std::vector<double> cgal{0};
+    Measures skin = cgal_too ? Measures{} : exact;
+    for (int k = 0; k < reps && cgal_too; ++k) {
+      if (k == 0) cgal.clear();
       Polyhedron p;
       const double start = bench::cpu_seconds();
       CGAL::make_skin_surface_mesh_3(p, points.begin(), points.end(), 0.5, 1);

@@ -194,7 +194,7 @@ LayerShare ErodedUnion::share(const Integrator& in, Index c) const {
 
 namespace alpha {
 
-ErodedUnion::Nearby::Nearby(std::unique_ptr<const Integrator> in, std::unique_ptr<Hood> hood)
+ErodedUnion::Nearby::Nearby(std::shared_ptr<const Integrator> in, std::unique_ptr<Hood> hood)
     : in_(std::move(in)), hood_(std::move(hood)) {}
 ErodedUnion::Nearby::Nearby(Nearby&&) noexcept = default;
 ErodedUnion::Nearby& ErodedUnion::Nearby::operator=(Nearby&&) noexcept = default;
@@ -202,9 +202,19 @@ ErodedUnion::Nearby::~Nearby() = default;
 
 ErodedUnion::Nearby ErodedUnion::nearby(const Vec3& center, double reach) const {
   auto hood = std::make_unique<Nearby::Hood>();
-  auto in = std::make_unique<const Integrator>(*this);
+  auto in = std::make_shared<const Integrator>(*this);
   in->gather(center, reach, *hood);
   return Nearby(std::move(in), std::move(hood));
+}
+
+ErodedUnion::Nearby ErodedUnion::Nearby::narrowed(const Vec3& center, double reach) const {
+  auto hood = std::make_unique<Hood>();
+  in_->narrow(*hood_, center, reach, *hood);
+  // Buried balls as gather() keeps them.
+  const double tol = in_->eu_.tolerance_;
+  for (const auto& [c, w] : hood_->buried)
+    if (norm(c - center) < std::sqrt(w) + reach + tol) hood->buried.emplace_back(c, w);
+  return Nearby(in_, std::move(hood));
 }
 
 ErodedUnion::Nearest ErodedUnion::Nearby::nearest(const Vec3& x, double limit) const {

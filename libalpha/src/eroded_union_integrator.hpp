@@ -384,7 +384,13 @@ public:
     for (std::size_t k = 0; k < h.buried.size() && !in_union; ++k)
       in_union = dot(x - h.buried[k].first, x - h.buried[k].first) < h.buried[k].second;
     if (!in_union) return {On::outside, 0, x, kNone};
-    for (const auto& [e, c] : h.circles) {
+    for (std::size_t k = 0; k < h.circles.size(); ++k) {
+      // Only a circle with an arc point nearer than the best so far can
+      // be nearer: most are further, as the ball holding their arcs shows.
+      const auto& [m, b] = h.arc_bounds[k];
+      const double reach = best.distance + b + 4 * tol_;
+      if (dot(x - m, x - m) >= reach * reach) continue;
+      const auto& [e, c] = h.circles[k];
       const Vec3 y = x - c.o;
       const double z = dot(y, c.w);
       if (std::fabs(z) >= best.distance) continue;
@@ -398,7 +404,12 @@ public:
         best = {On::circle, dist, c.o + c.rho * (px * c.e1 + py * c.e2), e};
     }
     for (const std::size_t v : h.vertices) {
-      const double dist = norm(x - eu_.vertices_[v].p);
+      // The square root only for vertices that can be nearer (the bound
+      // is far above the rounding of both sides).
+      const Vec3 d = x - eu_.vertices_[v].p;
+      const double dd = dot(d, d);
+      if (dd >= best.distance * best.distance * (1 + 1e-9)) continue;
+      const double dist = std::sqrt(dd);
       if (dist < best.distance) best = {On::vertex, dist, eu_.vertices_[v].p, Index(v)};
     }
     return best;

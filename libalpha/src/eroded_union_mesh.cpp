@@ -2,6 +2,7 @@
 #include "alpha/eroded_union_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <list>
@@ -29,6 +30,11 @@ constexpr double kRootPrecision = 1e-4;
 constexpr double kNodeGap = 1e-3;
 // Blocks whose neighbourhoods are kept.
 constexpr std::size_t kCachedBlocks = 8;
+// Cubes per axis of the parts of a block whose crossings ask a
+// neighbourhood narrowed to them (a divisor of kContourBlock): the
+// crossings near one point of F ask about a tenth of a block's pieces.
+constexpr std::size_t kCubeGroup = 2;
+static_assert(kContourBlock % kCubeGroup == 0);
 
 // The lattice of `spacing` (aligned to its multiples) over the box [lo, hi]
 // with two nodes to spare on every side.
@@ -71,6 +77,22 @@ public:
     if (cache_.size() > kCachedBlocks) cache_.pop_back();
     return cache_.front().second;
   }
+  // For the points on the edges of `cube` (its lowest node): the Nearby of
+  // its group of kCubeGroup^3 cubes, narrowed from its block's. The last
+  // group of each place in a block is kept (cubes are visited block by
+  // block).
+  const Nearby& of_cube(std::size_t cube) {
+    const std::size_t G = kCubeGroup, nx = lattice_.size[0], ny = lattice_.size[1];
+    const std::size_t i = cube % nx / G * G, j = cube / nx % ny / G * G, k = cube / (nx * ny) / G * G;
+    const std::size_t group = lattice_.index(i, j, k), per = kContourBlock / G;
+    auto& [key, near] = groups_[i / G % per + per * (j / G % per + per * (k / G % per))];
+    if (near && key == group) return *near;
+    const double h = lattice_.spacing, half = double(G) / 2;
+    const Vec3 center = lattice_.origin + Vec3{h * (double(i) + half), h * (double(j) + half), h * (double(k) + half)};
+    near.emplace(of(cube).narrowed(center, std::sqrt(3.0) * half * h + limit_ - eu_.r()));
+    key = group;
+    return *near;
+  }
   // The centre of the block of `node`: every node of the block and its
   // cubes are within half_diagonal() + sqrt(3) spacings of it.
   Vec3 center(std::size_t node) const {
@@ -88,6 +110,9 @@ private:
   const Lattice& lattice_;
   double limit_;
   std::list<std::pair<std::uint64_t, Nearby>> cache_;
+  std::array<std::pair<std::size_t, std::optional<Nearby>>, (kContourBlock / kCubeGroup) * (kContourBlock / kCubeGroup) *
+                                                                 (kContourBlock / kCubeGroup)>
+      groups_;
 };
 
 // Calls f(first node, nodes) for each block of nodes.
@@ -220,7 +245,7 @@ ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing) {
   ErodedUnionMesh out;
   Index hint = kNone;
   out.mesh = contour(lattice, inside, [&](std::size_t a, std::size_t b, std::size_t cube) {
-    const auto [p, n] = crossing(hoods.of(cube), lattice.node(a), lattice.node(b), r, hoods.limit());
+    const auto [p, n] = crossing(hoods.of_cube(cube), lattice.node(a), lattice.node(b), r, hoods.limit());
     const Index cell = eu.share_cell(p, n, hint);
     if (cell != kNone) hint = cell;
     out.share_cells.push_back(cell);
@@ -273,7 +298,7 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
     for (std::size_t n : nodes) inside[n] = held(near, lattice.node(n));
   });
   return contour(lattice, inside, [&](std::size_t a, std::size_t b, std::size_t cube) {
-    const Nearby& near = hoods.of(cube);
+    const Nearby& near = hoods.of_cube(cube);
     const Vec3 pa = lattice.node(a), pb = lattice.node(b);
     // Most crossings are on the molecular surface, b in the body: found by
     // Newton's method as the surface's vertices are, and kept when the
