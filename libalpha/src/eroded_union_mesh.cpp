@@ -142,8 +142,13 @@ Vec3 along(const Vec3& a, const Vec3& b, double t) {
 // Newton's method on phi(t) = d(x(t), F) - r, whose derivative is the unit
 // vector from the nearest point to x dotted with b - a, kept inside the
 // bracket (bisection where a step leaves it or phi has no derivative:
-// outside the union, or beyond the limit). Three or four evaluations
-// where regula falsi took ten.
+// outside the union, or beyond the limit). A Newton step of s A lands
+// within s^2 / 2r of the root where phi'' is at most 1 / r (the distance,
+// r, to a sphere, circle or point): when that is within the precision the
+// point is taken without evaluating there, with the nearest point found
+// within s of it (within s of the root, 8e-3 A at 0.5 A, where the
+// nearest piece changes within the step). 2.3 evaluations on average (1a26A at 0.5 A), where
+// evaluating every point took 3.1 and regula falsi ten.
 std::pair<Vec3, Nearest> crossing(const Nearby& near, const Vec3& a, const Vec3& b, double r, double limit) {
   const Vec3 d = b - a;
   const double length = norm(d);
@@ -154,13 +159,16 @@ std::pair<Vec3, Nearest> crossing(const Nearby& near, const Vec3& a, const Vec3&
     const double phi = n.distance - r;
     (phi >= 0 ? ta : tb) = t;
     double next = (ta + tb) / 2;
+    bool newton_step = false;
     const bool smooth = n.on == Nearest::On::sphere || n.on == Nearest::On::circle || n.on == Nearest::On::vertex;
     if (smooth && n.distance > 0) {
       const double slope = dot(x - n.point, d) / n.distance;
       const double newton = slope < 0 ? t - phi / slope : ta;
-      if (newton > ta && newton < tb) next = newton;
+      if (newton > ta && newton < tb) next = newton, newton_step = true;
     }
     if (std::fabs(phi) < kRootPrecision * length || tb - ta < kRootPrecision || iter == 60) return {x, n};
+    const double step = (next - t) * length;
+    if (newton_step && step * step < kRootPrecision * length * r) return {along(a, b, next), n};
     t = next;
   }
 }
@@ -222,6 +230,7 @@ ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing) {
   BlockHoods hoods(eu, lattice, r + 2 * spacing);
   const BlockBalls block_balls(eu, hoods.half_diagonal());
   std::vector<std::uint8_t> inside(lattice.num_nodes(), 0);
+  static_assert(kContourBlock % 2 == 0);
   for_blocks(lattice, [&](std::size_t first, const std::vector<std::size_t>& nodes) {
     // A block deep inside the body or far outside the union is one label:
     // mostly told by the balls alone, else by the pieces near it.
@@ -240,7 +249,27 @@ ErodedUnionMesh eroded_union_mesh(const ErodedUnion& eu, double spacing) {
       return;
     }
     if (at.on == Nearest::On::outside && near.outside_by(center) > half) return;
-    for (std::size_t n : nodes) inside[n] = near.nearest(lattice.node(n), r).on == Nearest::On::far;
+    // Else group by group of 2 x 2 x 2 nodes: the distance to F changes by
+    // no more than the distance moved, so a group whose centre is further
+    // than its half-diagonal from the level r is one label (one call where
+    // its nodes took eight: a third of the calls on 1a26A at 0.5 A), the
+    // others node by node.
+    const double h = lattice.spacing, group_half = std::sqrt(3.0) * h / 2, margin = 1e-6 * h;
+    const std::size_t i0 = first % lattice.size[0], j0 = first / lattice.size[0] % lattice.size[1];
+    const std::size_t k0 = first / (lattice.size[0] * lattice.size[1]), B = kContourBlock;
+    for (std::size_t gk = k0; gk < std::min(k0 + B, lattice.size[2]); gk += 2)
+      for (std::size_t gj = j0; gj < std::min(j0 + B, lattice.size[1]); gj += 2)
+        for (std::size_t gi = i0; gi < std::min(i0 + B, lattice.size[0]); gi += 2) {
+          const Nearest g = near.nearest(lattice.node(lattice.index(gi, gj, gk)) + Vec3{h / 2, h / 2, h / 2},
+                                         r + group_half + margin);
+          const bool all_in = g.on == Nearest::On::far, all_out = !all_in && g.distance < r - group_half - margin;
+          for (std::size_t k = gk; k < std::min(gk + 2, lattice.size[2]); ++k)
+            for (std::size_t j = gj; j < std::min(gj + 2, lattice.size[1]); ++j)
+              for (std::size_t i = gi; i < std::min(gi + 2, lattice.size[0]); ++i) {
+                const std::size_t n = lattice.index(i, j, k);
+                inside[n] = all_in || (!all_out && near.nearest(lattice.node(n), r).on == Nearest::On::far);
+              }
+        }
   });
   ErodedUnionMesh out;
   Index hint = kNone;
