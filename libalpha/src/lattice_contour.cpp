@@ -2,7 +2,8 @@
 #include "alpha/lattice_contour.hpp"
 
 #include <algorithm>
-#include <unordered_map>
+#include <cstdint>
+#include <vector>
 
 #include "alpha/error.hpp"
 
@@ -49,6 +50,41 @@ std::array<std::array<int, 4>, 12> even_permutations() {
   return out;
 }
 
+// Edge keys (never 0: the direction is 1..7) to vertex ids: open
+// addressing, linear probing, at most half full (a node-based hash map
+// allocated and freed a node per vertex: a tenth of the surface mesh's time).
+class EdgeTable {
+public:
+  // The id stored for key, kNone when new (then to be set).
+  Index& at(std::uint64_t key) {
+    if (2 * (used_ + 1) > keys_.size()) grow();
+    std::size_t k = slot(key);
+    while (keys_[k] != 0 && keys_[k] != key) k = (k + 1) & (keys_.size() - 1);
+    if (keys_[k] == 0) keys_[k] = key, ids_[k] = kNone, ++used_;
+    return ids_[k];
+  }
+
+private:
+  std::size_t slot(std::uint64_t key) const {
+    return std::size_t((key * 0x9E3779B97F4A7C15ull) >> 32) & (keys_.size() - 1);
+  }
+  void grow() {
+    std::vector<std::uint64_t> keys(std::max<std::size_t>(1024, 2 * keys_.size()), 0);
+    std::vector<Index> ids(keys.size(), kNone);
+    keys.swap(keys_);
+    ids.swap(ids_);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      if (keys[k] == 0) continue;
+      std::size_t j = slot(keys[k]);
+      while (keys_[j] != 0) j = (j + 1) & (keys_.size() - 1);
+      keys_[j] = keys[k], ids_[j] = ids[k];
+    }
+  }
+  std::vector<std::uint64_t> keys_;
+  std::vector<Index> ids_;
+  std::size_t used_ = 0;
+};
+
 }  // namespace
 
 SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& inside,
@@ -66,16 +102,19 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
 
   SurfaceMesh mesh;
   // Edge (lower node, direction 1..7 as dx + 2 dy + 4 dz) -> its vertex.
-  std::unordered_map<std::uint64_t, Index> edge_vertex;
+  EdgeTable edge_vertex;
   std::size_t o = 0;  // the cube being cut
   const auto point = [&](std::size_t a, std::size_t b) {  // a inside, b outside
     const std::size_t lo = std::min(a, b), hi = std::max(a, b);
     const std::size_t di = hi % size[0] - lo % size[0], dj = hi / size[0] % size[1] - lo / size[0] % size[1];
     const std::size_t dk = hi / (size[0] * size[1]) - lo / (size[0] * size[1]);
     const std::uint64_t key = std::uint64_t(lo) * 8 + (di + 2 * dj + 4 * dk);
-    const auto [it, added] = edge_vertex.try_emplace(key, Index(mesh.points.size()));
-    if (added) mesh.points.push_back(vertex(a, b, o));
-    return it->second;
+    Index& slot = edge_vertex.at(key);
+    if (slot == kNone) {
+      slot = Index(mesh.points.size());
+      mesh.points.push_back(vertex(a, b, o));
+    }
+    return slot;
   };
   const std::size_t dj = size[0], dk = size[0] * size[1];
   const auto cube = [&](std::size_t i, std::size_t j, std::size_t k) {
