@@ -190,7 +190,11 @@ public:
   }
   // Of the block whose nodes are within the half-diagonal of `center`.
   BlockIs where(const Vec3& center) const {
-    const double d = nearest_->distance(center);  // to the nearest sphere, < 0 inside
+    // To the nearest sphere (< 0 inside), exact when at most half_: only
+    // the balls that near are seen (the far blocks, most of the lattice,
+    // need no search for their nearest ball).
+    double d = HUGE_VAL;
+    nearest_->visit_near(center, half_, [&](Index i) { d = std::min(d, norm(center - centres_[i]) - radii_[i]); });
     if (d > half_) return BlockIs::outside;
     if (-d >= r_ + half_) return BlockIs::in_body;
     return BlockIs::unknown;
