@@ -8,7 +8,9 @@
 # Usage: bench/surface_mesh.sh [BENCH_SURFACE_MESH] [FILE ...]
 #   BENCH_SURFACE_MESH  default build/bench/bench_surface_mesh (ALPHAPOCKET_BENCH=ON, CGAL)
 #   FILEs               default ../shared/data/pockets-dev/*.pdb
-# Environment: REPS (runs of ours and CGAL per file, median; default 3).
+# Environment: REPS (runs of ours and CGAL per file, median; default 3);
+# NO_CGAL=1 leaves CGAL out (its minutes per file), RESOLUTION=H meshes ours
+# at H A instead of the default.
 # Prints bench_surface_mesh's table, then PyMOL's seconds and errors per
 # file, then the median time ratios CGAL / ours and PyMOL / ours (> 1: ours
 # is faster). Times are CPU seconds; ours counts everything from the atoms
@@ -26,7 +28,7 @@ command -v pymol >/dev/null || { echo "pymol not found (Debian: apt-get install 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-"$exe" "${files[@]}" | tee "$tmp/ours"
+"$exe" ${NO_CGAL:+--no-cgal} ${RESOLUTION:+--resolution "$RESOLUTION"} "${files[@]}" | tee "$tmp/ours"
 # Debian's pymol runs `python3` from PATH: make it Debian's own.
 PATH=/usr/bin:$PATH pymol -cq "$root/bench/pymol_surface.py" -- "${files[@]}" >"$tmp/pymol"
 

@@ -98,7 +98,7 @@ TEST_CASE("surface mesh: real proteins within 1% of the analytic molecular volum
     const auto atoms = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/" + name).atoms;
     const molecule::AtomBalls ab = molecule::atom_balls(atoms, 1.4);
     const testing::BallUnion u = testing::BallUnion::of_weighted(ab.points, ab.weights);
-    const Measured m = measure(*u.u, 1.4, 0.5);
+    const Measured m = measure(*u.u, 1.4, molecule::kDefaultMeshResolution);
     CHECK(m.mesh.volume == Approx(m.volume).epsilon(0.01));
     CHECK(m.mesh.area == Approx(m.area).epsilon(0.01));
   }
@@ -118,7 +118,8 @@ TEST_CASE("cast mesh: real proteins' casts are closed, voids and site-sized pock
     const alpha::UnionOfBalls balls(*search.complex);
     const alpha::ErodedUnion eu(balls, options.probe);
     const auto check = [&](const molecule::Cavity& c, bool is_void, std::size_t rank) {
-      const alpha::SurfaceMesh m = alpha::cells_mesh(eu, c.cells, molecule::cast_spacing(0.5, c.ms_volume));
+      const alpha::SurfaceMesh m =
+          alpha::cells_mesh(eu, c.cells, molecule::cast_spacing(molecule::kDefaultMeshResolution, c.ms_volume));
       const testing::SurfaceReport report = testing::surface_report(m);
       INFO(name << (is_void ? " void " : " pocket ") << rank << ": ms_volume " << c.ms_volume << ", "
                 << report.summary());

@@ -45,7 +45,8 @@ TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_
 }  // namespace
 
 double cast_spacing(double resolution, double ms_volume) {
-  return resolution * std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.5, 1.0);
+  return kCastResolution * (resolution / kDefaultMeshResolution) *
+         std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.5, 1.0);
 }
 
 PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {

@@ -19,6 +19,7 @@
 #include "alphapocket/version.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/output_selection.hpp"
+#include "molecule/pocket_meshes.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "molecule/tunnel_paths.hpp"
@@ -57,7 +58,7 @@ struct AnalysisOptions {
   std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
   TunnelOptions tunnels;            // --tunnel-probe, --pores
   SiteRanking ranking = SiteRanking::probability;
-  double mesh_resolution = 0.5;     // triangle size of the meshes, A (pocket_meshes.hpp)
+  double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A
 };
 
 // Everything one structure produced; owns all of it.

@@ -16,6 +16,7 @@
 
 #include "alpha/geometry.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/pocket_meshes.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/radii.hpp"
 #include "molecule/structure.hpp"
@@ -39,7 +40,7 @@ struct PocketRun {
   std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
   std::string tunnels_from = "auto";
   TunnelOptions tunnel_options;
-  double mesh_resolution = 0.5;  // lattice spacing of the meshes, A (pocket_meshes.hpp)
+  double mesh_resolution = kDefaultMeshResolution;  // lattice spacing of the surface mesh, A
 };
 
 // Predicted models: the mean pLDDT (B-factor) of the residues of these
