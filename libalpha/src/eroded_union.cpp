@@ -81,6 +81,13 @@ ErodedUnion::ErodedUnion(const UnionOfBalls& balls, double r) : balls_(&balls), 
     arc_bounds_.insert(arc_bounds_.end(), set.size(), bound);
   }
   arc_start_[s.num_edges()] = arcs_.size();
+  circle_start_.assign(n + 1, 0);
+  for (Index i = 0; i < n; ++i) {
+    circle_start_[i] = circle_edges_.size();
+    for (Index e : s.vertex_edges(i))
+      if (s.edge(e)[0] == i && arc_start_[e] != arc_start_[e + 1]) circle_edges_.push_back(e);
+  }
+  circle_start_[n] = circle_edges_.size();
 
   // Vertices: the two points where the spheres of a triangle of K meet,
   // kept when no apex of its two cells covers them (on its Voronoi edge).

@@ -642,9 +642,10 @@ private:
       if (ball_near(b, center, reach)) h.balls.push_back(b);
     }
     for (Index k : ids)
-      for (Index e : s_.vertex_edges(k)) {
+      for (std::size_t j = eu_.circle_start_[k]; j < eu_.circle_start_[k + 1]; ++j) {
+        const Index e = eu_.circle_edges_[j];
         const auto& v = s_.edge(e);
-        if (v[0] != k || edge_arcs(e).empty() || !std::binary_search(ids.begin(), ids.end(), v[1])) continue;
+        if (!std::binary_search(ids.begin(), ids.end(), v[1])) continue;
         // clear() finds a circle through a point of its arcs (see clear).
         const auto& [m, b] = eu_.arc_bounds_[eu_.arc_start_[e]];
         if (dot(center - m, center - m) >= (radius + b + tol_) * (radius + b + tol_)) continue;

@@ -210,6 +210,10 @@ private:
   std::vector<ArcEnds> arc_ends_;  // per arc
   // Per arc: a ball (centre, radius) holding all its edge's arcs.
   std::vector<std::pair<Vec3, double>> arc_bounds_;
+  // Per input point k: the edges (k, m) with arcs whose first vertex it
+  // is, in vertex_edges order; compressed rows.
+  std::vector<std::size_t> circle_start_;
+  std::vector<Index> circle_edges_;
   // Per triangle: its vertices on the boundary (0 to 2), compressed rows.
   std::vector<std::size_t> vertex_start_;
   std::vector<Vertex> vertices_;
