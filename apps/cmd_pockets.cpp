@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // alphapocket pockets FILE [-o OUTDIR] [--probe R] [--min-volume V]
-//                          [--mesh ply|obj|off|stl] [--outputs LIST] [--json]
+//                          [--mesh ply|obj|off|stl] [--outputs LIST] [--json] [-j N]
 //
 // The product command: reads a structure file, builds the weighted alpha
 // complex of its atoms (ProtOr radius + probe), finds pockets, voids and
@@ -286,6 +286,10 @@ Subcommand add_pockets_command(CLI::App& app) {
       ->type_name("OUTDIR")
       ->check(output_directory_name());
   add_cavity_options(*sub, opt->analysis);
+  sub->add_option("-j,--jobs", opt->analysis.cavities.threads,
+                  "Threads measuring the cavities (results identical for any number)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4096u));
   add_outputs_option(*sub, opt->outputs, "OUTDIR");
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   sub->add_option("--features", opt->features,

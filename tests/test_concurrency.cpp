@@ -2,7 +2,8 @@
 // The library keeps no global mutable state: searches on different
 // structures run in parallel threads give bit-for-bit the results of a
 // sequential run, and one alpha complex shared by threads computes its
-// persistence pairs once.
+// persistence pairs once; a search measuring its cavities on threads
+// gives bit-for-bit the sequential search's cavities.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -24,16 +25,25 @@ struct Digest {
   bool operator==(const Digest&) const = default;
 };
 
-Digest digest(const molecule::Structure& s) {
-  const molecule::PocketSearch r = molecule::search_pockets(s, {});
+Digest digest(const molecule::Structure& s, const molecule::CavityOptions& options = {}) {
+  const molecule::PocketSearch r = molecule::search_pockets(s, options);
   Digest d;
   d.values = {r.cavities.sa_area, r.cavities.sa_volume, double(r.complex->spectrum_size()),
               double(r.complex->persistence().size())};
   for (const auto* list : {&r.cavities.pockets, &r.cavities.voids})
     for (const molecule::Cavity& c : *list) {
-      d.values.insert(d.values.end(), {c.sa_volume, c.sa_area, c.depth, c.score, c.center.x, c.center.y, c.center.z,
-                                       c.max_alpha_sq, c.close_alpha_sq, c.mouth_area});
-      d.cells.insert(d.cells.end(), c.cells.begin(), c.cells.end());
+      d.values.insert(d.values.end(), {c.sa_volume, c.sa_area, c.ms_volume, c.ms_area, c.depth, c.score, c.center.x,
+                                       c.center.y, c.center.z, c.max_alpha_sq, c.close_alpha_sq, c.mouth_area,
+                                       c.buriedness, c.max_probe_radius, double(c.burial_atoms)});
+      for (const auto* ids : {&c.cells, &c.lining_atoms, &c.sinks}) {
+        d.cells.insert(d.cells.end(), ids->begin(), ids->end());
+        d.cells.push_back(alpha::kNone);  // the lists' ends
+      }
+      for (const molecule::Mouth& m : c.mouths) {
+        d.values.insert(d.values.end(), {m.area, double(m.to_outside)});
+        d.cells.insert(d.cells.end(), m.triangles.begin(), m.triangles.end());
+        d.cells.push_back(alpha::kNone);
+      }
     }
   for (const molecule::Tunnel& t : r.cavities.tunnels) d.values.push_back(t.bottleneck_radius);
   return d;
@@ -87,5 +97,21 @@ TEST_CASE("An alpha complex shared by threads computes its persistence once", "[
     const alpha::PersistencePair &a = (*seen[0])[k], &b = expected[k];
     CHECK((a.dim == b.dim && a.birth == b.birth && a.death == b.death && a.birth_simplex == b.birth_simplex &&
            a.death_simplex == b.death_simplex));
+  }
+}
+
+TEST_CASE("A search measuring its cavities on threads equals the sequential one", "[concurrency]") {
+  // 1fbl: a chain with many pockets of all sizes (basins of split regions).
+  for (const std::string f : {ALPHAPOCKET_TEST_DATA "/1fbl.pdb", ALPHAPOCKET_TEST_DATA "/1UYD.pdb"}) {
+    INFO(f);
+    const molecule::Structure s = molecule::read_structure(f);
+    const Digest sequential = digest(s);
+    REQUIRE(sequential.cells.size() > 100);
+    for (unsigned threads : {2u, 3u}) {
+      INFO(threads << " threads");
+      molecule::CavityOptions options;
+      options.threads = threads;
+      CHECK(digest(s, options) == sequential);
+    }
   }
 }

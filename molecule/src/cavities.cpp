@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <string>
 #include <tuple>
@@ -19,6 +20,7 @@
 #include "molecule/atom_balls.hpp"
 #include "cavity_space.hpp"
 #include "nearest_triangle.hpp"
+#include "parallel_for.hpp"
 
 namespace molecule {
 namespace {
@@ -140,13 +142,22 @@ std::vector<Index> sealed_from(const alpha::AlphaComplex& ac) {
   return sealed;
 }
 
+// The tasks' positions by decreasing size (ties in order): the order in
+// which the threads take them, the longest first.
+std::vector<std::size_t> largest_first(const std::vector<std::size_t>& sizes) {
+  std::vector<std::size_t> order(sizes.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
+  return order;
+}
+
 // Everything find_cavities shares between the cavities of one complex.
 class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
-        cavity_of_(t_.num_cells(), alpha::kNone), sealed_from_(sealed_from(ac)),
+        sealed_from_(sealed_from(ac)),
         atoms_(std::max(options.burial_radius, 1.0)), nearest_(t_.points(), radii, options.probe) {
     for (Index i = 0; i < t_.num_points(); ++i) atoms_.add(t_.point(i), i);
     atoms_.finish();
@@ -154,40 +165,37 @@ public:
 
   Index level() const { return level_; }
 
+  // The regions' basins, then the cavities' measures, each on
+  // options.threads threads: every task fills its own slot, and the lists
+  // are assembled in the order of a sequential run (regions by number,
+  // basins in order), so the output does not depend on the threads.
   void run(Cavities& out) {
     out.sa_area = space_.union_of_balls().area();
     out.sa_volume = space_.union_of_balls().volume();
-    std::vector<std::vector<Index>> regions(flow_.num_regions());
+    std::vector<std::vector<Index>> region_cells(flow_.num_regions());
     for (Index c = 0; c < t_.num_cells(); ++c)
-      if (flow_.region(c) != alpha::kNone) regions[flow_.region(c)].push_back(c);
-    Index next_id = 0;
-    for (const auto& cells : regions) {
-      // The region's triangles to the outside: its mouths, if any.
-      std::vector<Index> region_mouths;
-      for (Index c : cells)
-        for (int k = 0; k < 4; ++k)
-          if (flow_.outside(t_.cell(c).n[k]) && empty(s_.cell_triangle(c, k)))
-            region_mouths.push_back(s_.cell_triangle(c, k));
-      const RegionSpace space{cells, space_};
-      const NearestTriangle mouths(t_, s_, region_mouths);
-      if (region_mouths.empty()) {
-        for (Index c : cells) cavity_of_[c] = next_id;
-        ++next_id;
-        keep(out.voids, cells, space, mouths);
-        continue;
+      if (flow_.region(c) != alpha::kNone) region_cells[flow_.region(c)].push_back(c);
+    std::vector<std::size_t> sizes;
+    for (const auto& cells : region_cells) sizes.push_back(cells.size());
+    std::vector<std::optional<Region>> regions(region_cells.size());
+    parallel_for(largest_first(sizes), options_.threads,
+                 [&](std::size_t r) { regions[r].emplace(region_cells[r], *this); });
+
+    std::vector<const std::vector<Index>*> basins;
+    std::vector<const Region*> basin_region;
+    sizes.clear();
+    for (const std::optional<Region>& region : regions)
+      for (const std::vector<Index>& basin : region->basins) {
+        basins.push_back(&basin);
+        basin_region.push_back(&*region);
+        sizes.push_back(basin.size());
       }
-      std::vector<double> free_volume;
-      free_volume.reserve(cells.size());
-      for (const CellSpace& m : space.cells) free_volume.push_back(std::max(0.0, m.sa_empty));
-      const auto basins = alpha::persistent_basins(
-          ac_, level_, cells,
-          {options_.split_persistence, free_volume, options_.split_min_volume, options_.split_volume});
-      for (const auto& basin : basins) {
-        for (Index c : basin) cavity_of_[c] = next_id;
-        ++next_id;
-      }
-      for (const auto& basin : basins) keep(out.pockets, basin, space, mouths);
-    }
+    std::vector<std::optional<Cavity>> kept(basins.size());
+    parallel_for(largest_first(sizes), options_.threads, [&](std::size_t k) {
+      kept[k] = keep(*basins[k], basin_region[k]->space, basin_region[k]->nearest_mouth);
+    });
+    for (std::size_t k = 0; k < kept.size(); ++k)
+      if (kept[k]) (basin_region[k]->mouths.empty() ? out.voids : out.pockets).push_back(std::move(*kept[k]));
   }
 
 private:
@@ -200,7 +208,6 @@ private:
   alpha::DiscreteFlow flow_;
   CavitySpace space_;
   alpha::ErodedUnion excluded_;  // the solvent-excluded body: the SA union eroded by the probe
-  std::vector<Index> cavity_of_;     // cell -> cavity number (regions' basins, in order)
   std::vector<Index> sealed_from_;   // cell -> see sealed_from()
   // All atoms, bucketed: the burial count and the clearance look only near
   // the cavity (a scan of all atoms per cavity is slow on large assemblies).
@@ -227,17 +234,50 @@ private:
     }
   };
 
-  // Appends the cavity of `cells` (sorted, all numbered alike in
-  // cavity_of_, within the region of `space`, whose triangles to the
-  // outside are `mouths`) if it holds at least min_volume; the measures
-  // that look at atoms or mouths are taken only then.
-  void keep(std::vector<Cavity>& list, const std::vector<Index>& cells, const RegionSpace& space,
-            const NearestTriangle& mouths) const {
+  // A region of the flow with its empty space, its triangles to the
+  // outside (a pocket's mouths; none for a void) and its cavities: the
+  // basins of a pocket region, the whole of a void.
+  struct Region {
+    std::vector<Index> mouths;
+    RegionSpace space;
+    NearestTriangle nearest_mouth;
+    std::vector<std::vector<Index>> basins;
+    Region(const std::vector<Index>& cells, const CavityBuilder& b)
+        : mouths(b.region_mouths(cells)), space(cells, b.space_), nearest_mouth(b.t_, b.s_, mouths) {
+      if (mouths.empty()) {
+        basins.push_back(cells);
+        return;
+      }
+      std::vector<double> free_volume;
+      free_volume.reserve(cells.size());
+      for (const CellSpace& m : space.cells) free_volume.push_back(std::max(0.0, m.sa_empty));
+      const CavityOptions& o = b.options_;
+      basins = alpha::persistent_basins(b.ac_, b.level_, cells,
+                                        {o.split_persistence, free_volume, o.split_min_volume, o.split_volume});
+    }
+  };
+
+  // The region's triangles to the outside.
+  std::vector<Index> region_mouths(const std::vector<Index>& cells) const {
+    std::vector<Index> mouths;
+    for (Index c : cells)
+      for (int k = 0; k < 4; ++k)
+        if (flow_.outside(t_.cell(c).n[k]) && empty(s_.cell_triangle(c, k))) mouths.push_back(s_.cell_triangle(c, k));
+    return mouths;
+  }
+
+  // The cavity of `cells` (sorted, a basin of the region of `space`, whose
+  // triangles to the outside are `mouths`) if it holds at least
+  // min_volume; the measures that look at atoms or mouths are taken only
+  // then.
+  std::optional<Cavity> keep(const std::vector<Index>& cells, const RegionSpace& space,
+                             const NearestTriangle& mouths) const {
     double sa_volume = 0;
     for (Index c : cells) sa_volume += space[c].sa_empty;
     // Fractional shares are exact only in sum: keep the sums, not below 0.
     sa_volume = std::max(0.0, sa_volume);
-    if (sa_volume >= options_.min_volume) list.push_back(build(cells, space, mouths, sa_volume));
+    if (sa_volume >= options_.min_volume) return build(cells, space, mouths, sa_volume);
+    return std::nullopt;
   }
 
   Cavity build(const std::vector<Index>& cells, const RegionSpace& space, const NearestTriangle& mouths,
@@ -248,7 +288,6 @@ private:
     // The probe layer between the SA and the molecular surface whose
     // nearest solvent-accessible point lies on the cavity's wall.
     const alpha::LayerShare layer = excluded_.cells_share(cells);
-    const Index id = cavity_of_[cells.front()];
     std::vector<Opening> openings;
     Index last = cells.front();
     Vec3 weighted{};
@@ -259,7 +298,7 @@ private:
       for (int k = 0; k < 4; ++k) {
         cav.lining_atoms.push_back(cell.v[k]);
         const Index f = s_.cell_triangle(c, k);
-        if (cavity_of_[cell.n[k]] == id || !empty(f)) continue;
+        if (!empty(f) || std::binary_search(cells.begin(), cells.end(), cell.n[k])) continue;
         openings.emplace_back(f, flow_.outside(cell.n[k]));
       }
       // The last cell to fill; ties as in the persistence pairs (the elder

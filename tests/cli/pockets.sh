@@ -99,6 +99,25 @@ case "$case_name" in
     expect_consistent "$tmp/o" "$pockets" "$voids" ply
     [[ -z $(ls "$tmp/o/meshes" | grep -v '\.\(ply\|mlp\)$') ]] || fail "meshes of the first run left: $(ls "$tmp/o/meshes")"
     ;;
+  threads)
+    # -j N measures the cavities on N threads: every output and the summary
+    # byte-identical to -j 1's (1fbl: many pockets, split regions); -j 0 is
+    # a usage error.
+    for input in "$pdb" "$root/tests/data/1fbl.pdb"; do
+      for j in 1 2 3; do
+        mkdir -p "$tmp/j$j"
+        (cd "$tmp/j$j" && "$exe" -q pockets "$input" -o o -j "$j" --outputs all --mesh-resolution 1.5 >stdout) ||
+          fail "-j $j failed on $input"
+      done
+      [[ $(ls "$tmp/j1/o/meshes" | wc -l) -gt 3 ]] || fail "$input: too few meshes to compare"
+      for j in 2 3; do
+        diff -r "$tmp/j1" "$tmp/j$j" >/dev/null || fail "$input: -j $j differs from -j 1: $(diff -rq "$tmp/j1" "$tmp/j$j")"
+      done
+      rm -rf "$tmp"/j[123]
+    done
+    run pockets "$pdb" -o "$tmp/bad" -j 0
+    [[ $rc -eq 2 && ! -e "$tmp/bad" ]] || fail "-j 0: exit code $rc, expected 2 and no OUTDIR"
+    ;;
   outputs)
     # --outputs chooses the files; the meshes' own options ask for meshes.
     run -q pockets "$pdb" -o "$tmp/o" --outputs report,tunnels

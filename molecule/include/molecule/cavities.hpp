@@ -207,6 +207,9 @@ struct CavityOptions {
   double split_volume = kLigandSiteVolume;
   double split_min_volume = 30;
   double burial_radius = 14;  // A, for Cavity::burial_atoms
+  // Threads measuring the cavities (0 counts as 1); the results are the
+  // same, bit for bit, for any number.
+  unsigned threads = 1;
 };
 
 // Cavities of the alpha complex `ac` of the atoms; radii[i] is the van der

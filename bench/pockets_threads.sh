@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The cavity stage on threads: `alphapocket -v pockets -j 1` against `-j 2`
+# on the 54-copy 1a26A assembly (bench/assembly54.py, 149,526 atoms), runs
+# alternating, REPS each (default 3). Prints the "cavities: S s" wall time
+# that -v logs for each run, the medians and their ratio (-j 1 / -j 2:
+# the speed-up), the load average before and after, and whether the two
+# settings' outputs are byte-identical (OUTDIR and stdout of the last runs).
+#
+# Usage: bench/pockets_threads.sh [ALPHAPOCKET]   (default build/apps/alphapocket)
+# Needs python3-gemmi, python3-scipy. The machine's load distorts wall
+# times: quote the load with the figures.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+exe=$(realpath "${1:-$root/build/apps/alphapocket}")
+reps=${REPS:-3}
+[[ -x $exe ]] || { echo "$exe: not an executable (build alphapocket first)" >&2; exit 1; }
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+/usr/bin/python3 "$root/bench/assembly54.py" "$root/examples/data/1a26A.pdb" "$scratch/copies54.cif"
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+cavities_seconds() {  # JOBS: runs the search, prints the logged cavity stage's seconds
+  rm -rf "$scratch/j$1"
+  mkdir "$scratch/j$1"
+  (cd "$scratch/j$1" && "$exe" -v pockets ../copies54.cif -o out -j "$1" >stdout 2>stderr)
+  sed -n 's/^\[info\] cavities: \([0-9.]*\) s,.*/\1/p' "$scratch/j$1/stderr"
+  rm "$scratch/j$1/stderr"
+}
+
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+for ((r = 1; r <= reps; ++r)); do
+  a=$(cavities_seconds 1)
+  b=$(cavities_seconds 2)
+  echo "run $r: cavities -j 1 $a s, -j 2 $b s"
+  echo "$a" >>"$scratch/j1.times"
+  echo "$b" >>"$scratch/j2.times"
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+m1=$(median <"$scratch/j1.times")
+m2=$(median <"$scratch/j2.times")
+awk -v a="$m1" -v b="$m2" 'BEGIN { printf "cavity stage, median of the runs: -j 1 %.2f s, -j 2 %.2f s: %.2fx\n", a, b, a / b }'
+if diff -r "$scratch/j1" "$scratch/j2" >/dev/null; then
+  echo "outputs: -j 1 and -j 2 byte-identical"
+else
+  echo "outputs: -j 1 and -j 2 DIFFER"
+  exit 1
+fi
