@@ -269,6 +269,19 @@ std::size_t loop_value_line(std::string_view text, std::size_t loop_line, std::s
 constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_alt_id", "label_asym_id",  "Cartn_x",
                                              "Cartn_y", "Cartn_z",     "occupancy",    "B_iso_or_equiv", "auth_seq_id"};
 
+// Whether gemmi's string_to_int would overflow on v (undefined behaviour):
+// the run of digits after blanks and a sign is beyond 2^31 - 1.
+bool int_overflows(const std::string& v) {
+  std::size_t i = 0;
+  while (i < v.size() && (v[i] == ' ' || v[i] == '\t')) ++i;
+  if (i < v.size() && (v[i] == '-' || v[i] == '+')) ++i;
+  while (i < v.size() && v[i] == '0') ++i;
+  std::size_t end = i;
+  while (end < v.size() && v[end] >= '0' && v[end] <= '9') ++end;
+  const std::string_view digits(v.data() + i, end - i);
+  return digits.size() > 10 || (digits.size() == 10 && digits > "2147483647");
+}
+
 // gemmi converts the _atom_site values it reads (a single character, an
 // integer, a number) without saying where a bad one is, and reads a
 // coordinate that is not a number as NaN, so its table is checked here
@@ -279,7 +292,7 @@ constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_al
 void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std::string& name,
                      UnknownElements& unknown) {
   std::vector<std::string> tags(std::begin(kRequiredAtomSite), std::end(kRequiredAtomSite));
-  enum { kSymbol = 1, kAlt = 2, kX = 4, kAuthSeq = 9, kIcode, kLabelSeq, kCharge };
+  enum { kId = 0, kSymbol = 1, kAlt = 2, kX = 4, kAuthSeq = 9, kIcode, kLabelSeq, kCharge };
   for (const char* optional : {"?pdbx_PDB_ins_code", "?label_seq_id", "?pdbx_formal_charge"}) tags.emplace_back(optional);
   gemmi::cif::Table table = block.find("_atom_site.", tags);
   if (!table.ok()) return;
@@ -297,6 +310,8 @@ void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std:
   };
   for (std::size_t row = 0; row < table.length(); ++row) {
     const gemmi::cif::Table::Row values = table[int(row)];
+    for (const std::size_t c : {std::size_t(kId), std::size_t(kAuthSeq), std::size_t(kLabelSeq), std::size_t(kCharge)})
+      if (values.has(c) && int_overflows(values[c])) bad(row, c, "an integer beyond 2147483647");
     for (const std::size_t c : {std::size_t(kAlt), std::size_t(kIcode)})
       if (values.has(c)) try {
           gemmi::cif::as_char(values[c], ' ');
@@ -345,8 +360,9 @@ std::string one_line(std::string s, const std::string& name) {
   // Some end with ": NAME" ("Incorrect file format (perhaps it is cif not
   // pdb?): NAME"); ours start with it.
   const std::string suffix = ": " + name;
-  if (s.size() > suffix.size() && s.ends_with(suffix)) s.erase(s.size() - suffix.size());
-  return s.starts_with(name) ? s : name + ": " + s;
+  if (s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0)
+    s.erase(s.size() - suffix.size());
+  return s.compare(0, name.size(), name) == 0 ? s : name + ": " + s;
 }
 
 // The required columns a block's _atom_site lacks; none if it has no _atom_site.
