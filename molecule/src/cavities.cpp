@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -156,8 +157,10 @@ class CavityBuilder {
 public:
   CavityBuilder(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options)
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
+        sealing_(std::async(options.threads > 1 ? std::launch::async : std::launch::deferred,
+                            [&ac] { return sealed_from(ac); })),
         flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
-        sealed_from_(sealed_from(ac)),
+        sealed_from_(sealing_.get()),
         atoms_(std::max(options.burial_radius, 1.0)), nearest_(t_.points(), radii, options.probe) {
     for (Index i = 0; i < t_.num_points(); ++i) atoms_.add(t_.point(i), i);
     atoms_.finish();
@@ -205,6 +208,9 @@ private:
   const std::vector<double>& radii_;
   const CavityOptions& options_;
   Index level_;
+  // sealed_from() on a thread of its own while the union and the eroded
+  // union are built (with more than one thread).
+  std::future<std::vector<Index>> sealing_;
   alpha::DiscreteFlow flow_;
   CavitySpace space_;
   alpha::ErodedUnion excluded_;  // the solvent-excluded body: the SA union eroded by the probe
