@@ -4,12 +4,14 @@
 # on the 54-copy 1a26A assembly (bench/assembly54.py, 149,526 atoms), runs
 # alternating, REPS each (default 3). Prints the "cavities: S s" wall time
 # that -v logs for each run, the medians and their ratio (-j 1 / -j 2:
-# the speed-up), the load average before and after, and whether the two
-# settings' outputs are byte-identical (OUTDIR and stdout of the last runs).
+# the speed-up), each run's whole-process CPU use (GNU time's %P: near
+# 100 % for -j 2 means it got one core), the load average before and
+# after, and whether the two settings' outputs are byte-identical (OUTDIR
+# and stdout of the last runs).
 #
 # Usage: bench/pockets_threads.sh [ALPHAPOCKET]   (default build/apps/alphapocket)
-# Needs python3-gemmi, python3-scipy. The machine's load distorts wall
-# times: quote the load with the figures.
+# Needs python3-gemmi, python3-scipy, GNU time. The machine's load
+# distorts wall times: quote the load with the figures.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -21,19 +23,19 @@ trap 'rm -rf "$scratch"' EXIT
 /usr/bin/python3 "$root/bench/assembly54.py" "$root/examples/data/1a26A.pdb" "$scratch/copies54.cif"
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-cavities_seconds() {  # JOBS: runs the search, prints the logged cavity stage's seconds
+cavities_seconds() {  # JOBS: runs the search, prints the logged cavity stage's seconds and the CPU use
   rm -rf "$scratch/j$1"
   mkdir "$scratch/j$1"
-  (cd "$scratch/j$1" && "$exe" -v pockets ../copies54.cif -o out -j "$1" >stdout 2>stderr)
-  sed -n 's/^\[info\] cavities: \([0-9.]*\) s,.*/\1/p' "$scratch/j$1/stderr"
+  (cd "$scratch/j$1" && /usr/bin/time -f %P -o ../cpu "$exe" -v pockets ../copies54.cif -o out -j "$1" >stdout 2>stderr)
+  echo "$(sed -n 's/^\[info\] cavities: \([0-9.]*\) s,.*/\1/p' "$scratch/j$1/stderr") $(cat "$scratch/cpu")"
   rm "$scratch/j$1/stderr"
 }
 
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for ((r = 1; r <= reps; ++r)); do
-  a=$(cavities_seconds 1)
-  b=$(cavities_seconds 2)
-  echo "run $r: cavities -j 1 $a s, -j 2 $b s"
+  read -r a pa <<<"$(cavities_seconds 1)"
+  read -r b pb <<<"$(cavities_seconds 2)"
+  echo "run $r: cavities -j 1 $a s ($pa CPU), -j 2 $b s ($pb CPU)"
   echo "$a" >>"$scratch/j1.times"
   echo "$b" >>"$scratch/j2.times"
 done
