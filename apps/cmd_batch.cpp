@@ -293,11 +293,13 @@ Subcommand add_batch_command(CLI::App& app) {
                 "Only print the structures the run would analyse, one 'id<TAB>path' line each, sorted by id (or "
                 "the error an input would stop the run with), and exit");
   sub->add_option("-j,--jobs", opt->jobs, "Worker threads, one structure each (default: all cores)")
-      ->check(CLI::Range(1u, 4096u));
+      ->type_name("N")
+      ->check(CLI::Range(1u, 4096u).description(""));
   add_outputs_option(*sub, opt->outputs, "OUTDIR/<id>/ for each structure");
   sub->add_option("--max-atoms", opt->max_atoms, "Structures with more atoms (after the selection) are skipped")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->type_name("N")
+      ->check(CLI::PositiveNumber.description(""));
   // -o is required unless --print-inputs: a wrong command line (exit 2) either way.
   sub->parse_complete_callback([opt] {
     if (!opt->print_inputs && opt->output_dir.empty()) throw CLI::RequiredError("-o,--output-dir");

@@ -289,7 +289,8 @@ Subcommand add_pockets_command(CLI::App& app) {
   sub->add_option("-j,--jobs", opt->analysis.cavities.threads,
                   "Threads measuring the cavities (results identical for any number)")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 4096u));
+      ->type_name("N")
+      ->check(CLI::Range(1u, 4096u).description(""));
   add_outputs_option(*sub, opt->outputs, "OUTDIR");
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   sub->add_option("--features", opt->features,

@@ -16,7 +16,8 @@ install(FILES ${PROJECT_BINARY_DIR}/generated/alphapocket/version.hpp
 # The molecule headers of the public API; the others (report JSON, batch
 # tables, viewer scripts) are the CLI's and stay in the tree.
 set(public_molecule_headers
-    analysis atom_balls cavities ligandability_model mesh_export output_selection pocket_search radii radius_file
+    analysis atom_balls cavities ligandability_model mesh_export output_selection pocket_meshes pocket_search radii
+    radius_file
     site_features structure surface tunnel_paths tunnel_start)
 list(TRANSFORM public_molecule_headers PREPEND ${PROJECT_SOURCE_DIR}/molecule/include/molecule/)
 list(TRANSFORM public_molecule_headers APPEND .hpp)

@@ -41,7 +41,10 @@ case "$case_name" in
     grep -q '^Usage: pockets \[OPTIONS\] FILE' "$tmp/out" || fail "not the help of pockets"
     grep -q 'Exit codes: 0 success; 1 ' "$tmp/out" || fail "no exit codes"
     grep -qE -- '--min-volume V=1 ' "$tmp/out" || fail "no plain default for --min-volume"
-    ! grep -qE 'FLOAT:|NUMBER|in \[' "$tmp/out" || fail "raw type strings in the help"
+    ! grep -qE 'FLOAT:|NUMBER|UINT|in \[' "$tmp/out" || fail "raw type strings in the help"
+    run help batch
+    expect_success
+    ! grep -qE 'FLOAT:|NUMBER|UINT|POSITIVE|in \[' "$tmp/out" || fail "raw type strings in batch's help"
     run help
     expect_success
     # pockets is the first subcommand listed.
