@@ -104,16 +104,21 @@ int Kernel::orient3d(Index a, Index b, Index c, Index d) {
 // (kNone) has no perturbation.
 template <class OrientWithP>
 bool Kernel::perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p) {
-  int order[4] = {0, 1, 2, 3};
   auto input_index = [&](Index i) { return static_cast<long long>(ids_ ? ids_[i] : i); };
-  auto rank = [&](int k) { return id[k] == kNone ? -1 : input_index(id[k]); };
-  std::sort(order, order + 4, [&](int x, int y) { return rank(x) > rank(y); });
-  for (int k : order) {
-    if (rank(k) < input_index(pid)) break;
-    const int o = orient_with_p(k);
+  const long long p_rank = input_index(pid);
+  long long rank[4];
+  for (int k = 0; k < 4; ++k) rank[k] = id[k] == kNone ? -1 : input_index(id[k]);
+  // The vertices above p, largest first (picked one at a time: the first
+  // nonzero cofactor usually ends it).
+  for (;;) {
+    int next = -1;
+    for (int k = 0; k < 4; ++k)
+      if (rank[k] > p_rank && (next < 0 || rank[k] > rank[next])) next = k;
+    if (next < 0) return true;  // p has the largest remaining perturbation: its weight wins
+    const int o = orient_with_p(next);
     if (o != 0) return o < 0;
+    rank[next] = -1;
   }
-  return true;  // p has the largest remaining perturbation: its weight wins
 }
 
 bool Kernel::exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
