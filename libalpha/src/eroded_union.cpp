@@ -217,10 +217,8 @@ ErodedUnion::Nearby ErodedUnion::nearby(const Vec3& center, double reach) const 
 ErodedUnion::Nearby ErodedUnion::Nearby::narrowed(const Vec3& center, double reach) const {
   auto hood = std::make_unique<Hood>();
   in_->narrow(*hood_, center, reach, *hood);
-  // Buried balls as gather() keeps them.
-  const double tol = in_->eu_.tolerance_;
   for (const auto& [c, w] : hood_->buried)
-    if (norm(c - center) < std::sqrt(w) + reach + tol) hood->buried.emplace_back(c, w);
+    if (in_->buried_near(c, w, center, reach)) hood->buried.emplace_back(c, w);
   return Nearby(in_, std::move(hood));
 }
 

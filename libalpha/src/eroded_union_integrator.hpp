@@ -633,7 +633,7 @@ private:
       if (norm(t_.point(k) - center) >= std::sqrt(t_.weight(k)) + radius) return;
       if (eu_.balls_->ball_areas()[k] > 0)
         ids.push_back(k);
-      else if (norm(t_.point(k) - center) < std::sqrt(t_.weight(k)) + reach + tol_)
+      else if (buried_near(t_.point(k), t_.weight(k), center, reach))
         h.buried.emplace_back(t_.point(k), t_.weight(k));
     });
     std::sort(ids.begin(), ids.end());
@@ -663,6 +663,12 @@ private:
   // Into `out`, what of h (gathered for a wider reach) clear() can find or
   // be inside at points within `reach` of x tested at distances t up to
   // `within` (at most r), in h's order.
+  // Whether a buried ball (centre c, squared radius w) is kept for the
+  // points within reach of center: nearest() asks whether they are inside.
+  bool buried_near(const Vec3& c, double w, const Vec3& center, double reach) const {
+    return norm(c - center) < std::sqrt(w) + reach + tol_;
+  }
+
   void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const { narrow(h, x, reach, r_, out); }
   void narrow(const Hood& h, const Vec3& x, double reach, double within, Hood& out) const {
     const double radius = reach + within + 2 * tol_;

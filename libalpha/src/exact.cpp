@@ -74,15 +74,17 @@ bool is_integer(const Vec3& v) { return is_integer(v.x) & is_integer(v.y) & is_i
 
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3* v[4] = {&a, &b, &c, &d};
-  // Integers with differences below 2^16: each product of three is below
-  // 2^48 and the sum of six below 2^51, so doubles are exact.
+  // Integers with differences below 2^16: det3's 2x2 minors are below
+  // 2^33, its three terms below 2^49 and their sum below 2^51, so doubles
+  // are exact.
   if (is_integer(a) & is_integer(b) & is_integer(c) & is_integer(d)) {
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    const double wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
-    const double m = std::max({std::fabs(ux), std::fabs(uy), std::fabs(uz), std::fabs(vx), std::fabs(vy),
-                               std::fabs(vz), std::fabs(wx), std::fabs(wy), std::fabs(wz)});
-    if (m < 0x1p16) return sign(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx));
+    double r[3][3];
+    double m = 0;
+    for (int i = 1; i < 4; ++i) {
+      r[i - 1][0] = v[i]->x - a.x, r[i - 1][1] = v[i]->y - a.y, r[i - 1][2] = v[i]->z - a.z;
+      m = std::max({m, std::fabs(r[i - 1][0]), std::fabs(r[i - 1][1]), std::fabs(r[i - 1][2])});
+    }
+    if (m < 0x1p16) return sign(det3(r[0], r[1], r[2]));
   }
   Dyadic s[12];
   for (int i = 0; i < 4; ++i) {
@@ -128,7 +130,10 @@ bool small_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, d
 
 int power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
   int det, orient[4];
-  if (small_power_det(q, w, p, wp, det, orient)) return det;
+  return small_power_det(q, w, p, wp, det, orient) ? det : dyadic_power_det(q, w, p, wp);
+}
+
+int dyadic_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp) {
   Dyadic c[15], ws[5];
   for (int i = 0; i < 4; ++i) {
     c[3 * i] = split(q[i]->x);

@@ -25,4 +25,8 @@ int power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double w
 // such.
 bool small_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp, int& det, int orient[4]);
 
+// The stages of power_det after small_power_det (128-bit, then GMP), for
+// input that one refused.
+int dyadic_power_det(const Vec3* const q[4], const double w[4], const Vec3& p, double wp);
+
 }  // namespace alpha::exact

@@ -124,7 +124,7 @@ bool Kernel::perturbed_conflict(const Index id[4], Index pid, OrientWithP orient
 bool Kernel::exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
   int s, orient[4];
   const bool small = exact::small_power_det(q, wq, pts_[p], weight(p), s, orient);
-  if (!small) s = exact::power_det(q, wq, pts_[p], weight(p));
+  if (!small) s = exact::dyadic_power_det(q, wq, pts_[p], weight(p));
   if (s != 0) {
     ++stats_.power.exact;
     return s < 0;
