@@ -158,12 +158,24 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
     if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
         (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
       return false;
-    const bool atom = equals_ci(line.substr(0, 4), "atom");
-    if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
-    const std::string_view record = atom ? "ATOM" : "HETATM";
     const auto error = [&](const std::string& what) {
       fail(name, "line " + std::to_string(line_number) + ": " + what);
     };
+    // gemmi reads the distance of a SSBOND or LINK record longer than 73
+    // characters from columns 74-78, past the record's end when it is
+    // shorter. Its record is the line up to a NUL, with the CR and LF.
+    if ((equals_ci(line.substr(0, 4), "ssbo") || equals_ci(line.substr(0, 4), "link")) && !old_columns) {
+      std::size_t length = line.find('\0');
+      if (length == std::string_view::npos) {
+        const std::size_t end = std::size_t(line.data() - text.data()) + line.size();
+        length = std::min(text.size(), text.find('\n', end) + 1) - std::size_t(line.data() - text.data());
+      }
+      if (length > 73 && length < 78)
+        error(std::string(trimmed(line.substr(0, 6))) + " record ends inside its distance field (columns 74-78)");
+    }
+    const bool atom = equals_ci(line.substr(0, 4), "atom");
+    if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
+    const std::string_view record = atom ? "ATOM" : "HETATM";
     if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
     if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
       error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
