@@ -68,6 +68,10 @@ molecule::AnalysisOptions analysis_options(const py::dict& o) {
   molecule::AnalysisOptions a;
   a.cavities.probe = o["probe"].cast<double>();
   a.cavities.min_volume = o["min_volume"].cast<double>();
+  const long long threads = o["threads"].cast<long long>();
+  if (threads < 1 || threads > 4096)
+    throw alpha::Error("threads: " + std::to_string(threads) + " is not in 1..4096", alpha::ErrorKind::Misuse);
+  a.cavities.threads = unsigned(threads);
   a.structure.model = o["model"].cast<int>();
   a.structure.chains = o["chains"].cast<std::vector<std::string>>();
   a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();

@@ -32,7 +32,7 @@ _ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=1.0, model=0, chains=[], keep_hyd
                          keep_hetero=False, keep_cofactors=False, min_plddt=0.0, radii="", tunnels_from="auto",
                          tunnel_probe=0.9,
                          pores=False, mesh="ply", outputs="report,csv,pml,pdb,tunnels",
-                         ranking="probability", max_input_mb=512)
+                         ranking="probability", max_input_mb=512, threads=1)
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
 
 
@@ -176,7 +176,8 @@ def analyze(structure=None, **options):
     ranking="probability" (sites by the ligandability model's probability,
     each site's .probability; "geometric": by .score), max_input_mb=512
     (larger structure files, after gzip decompression, raise
-    LimitExceededError)."""
+    LimitExceededError), threads=1 (threads measuring the cavities, as
+    `pockets -j`; the results are identical for any number)."""
     kind, source, data = _input(structure, options)
     unknown = set(options) - set(_ANALYZE_DEFAULTS)
     if unknown:

@@ -70,3 +70,17 @@ def test_long_calls_let_other_threads_run():
         seconds, pause = longest_pause(call)
         assert seconds > 0.1, f"{name}: too short a call to tell ({seconds:.3f} s)"
         assert pause < seconds / 2, f"{name}: other threads stopped for {pause:.3f} of {seconds:.3f} s"
+
+
+def test_threads_option_gives_the_serial_results():
+    # 1a26A's 13 pockets are measured on 3 threads in another order than
+    # one thread's; the report must not show it.
+    serial = alphapocket.analyze(PDB, tunnels_from="none").to_json()
+    assert alphapocket.analyze(PDB, tunnels_from="none", threads=3).to_json() == serial
+    for bad in (0, -1, 5000):
+        try:
+            alphapocket.analyze(PDB, threads=bad)
+        except alphapocket.MisuseError as e:
+            assert str(e) == f"threads: {bad} is not in 1..4096"
+        else:
+            raise AssertionError(f"threads={bad} accepted")
