@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <random>
 #include <vector>
 
 #include "alpha/error.hpp"
@@ -133,6 +134,59 @@ TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
     CHECK(together.volume == volume);
     CHECK(together.area == area);
   }
+}
+
+TEST_CASE("eroded union: a patch's area in a cell's cone, against its sphere's area and Monte Carlo", "[eroded]") {
+  const Balls balls = cluster(40, 21, 9.0, 1.6, 3.4);
+  const Union u(balls);
+  const ErodedUnion e(*u.u, 1.4);
+  const Triangulation& t = *u.t;
+  // The cones about a centre fill space: the parts add up to the sphere's
+  // area on the boundary (UnionOfBalls' inclusion-exclusion over K).
+  std::vector<double> sum(t.num_points(), 0.0);
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (!t.is_infinite(c))
+      for (int k = 0; k < 4; ++k) sum[t.cell(c).v[k]] += e.patch_area(c, k);
+  for (std::size_t i = 0; i < balls.radii.size(); ++i) {
+    INFO("ball " << i);
+    CHECK(sum[i] == Approx(u.ball_area(i)).epsilon(1e-11).margin(1e-11 * balls.radii[i] * balls.radii[i]));
+  }
+  // Per cone: directions n in it (a nonnegative combination of the edges,
+  // by Cramer's rule) whose point p + R n is in no other ball.
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  int tested = 0;
+  for (Index c = 0; c < t.num_cells() && tested < 6; ++c) {
+    if (t.is_infinite(c)) continue;
+    for (int k = 0; k < 4; ++k) {
+      const Index i = t.cell(c).v[k];
+      if (i >= balls.radii.size()) continue;  // a far point
+      const double radius = balls.radii[i], whole = 4 * kPi * radius * radius, area = e.patch_area(c, k);
+      if (!(area > 0.05 * whole)) continue;
+      std::array<Vec3, 3> edge;
+      for (int n = 1; n < 4; ++n) edge[n - 1] = t.point(t.cell(c).v[(k + n) % 4]) - balls.centers[i];
+      const double det = dot(edge[0], cross(edge[1], edge[2]));
+      const int samples = 100000;
+      int hits = 0;
+      for (int s = 0; s < samples; ++s) {
+        Vec3 n{normal(rng), normal(rng), normal(rng)};
+        n = (1 / norm(n)) * n;
+        if (dot(n, cross(edge[1], edge[2])) * det < 0 || dot(edge[0], cross(n, edge[2])) * det < 0 ||
+            dot(edge[0], cross(edge[1], n)) * det < 0)
+          continue;
+        const Vec3 x = balls.centers[i] + radius * n;
+        bool covered = false;
+        for (std::size_t m = 0; m < balls.radii.size() && !covered; ++m)
+          covered = m != i && norm(x - balls.centers[m]) < balls.radii[m];
+        hits += !covered;
+      }
+      const double f = double(hits) / samples, sigma = whole * std::sqrt(f * (1 - f) / samples);
+      INFO("cell " << c << " vertex " << k << ": " << area << " against " << whole * f << " +- " << sigma);
+      CHECK(std::fabs(area - whole * f) <= 4.5 * sigma);
+      ++tested;
+    }
+  }
+  CHECK(tested == 6);
 }
 
 TEST_CASE("eroded union: share_cell is the cell whose cone holds the nearest point, from any hint", "[eroded]") {

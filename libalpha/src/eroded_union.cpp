@@ -182,8 +182,12 @@ LayerShare ErodedUnion::share(const Integrator& in, Index c) const {
   const Simplices& s = ac.simplices();
   if (t.is_infinite(c)) return {};
   LayerSum sum;
-  sum.add({balls_->cell_area(c, shell_factor_), balls_->cell_area(c, contact_factor_)});
   const auto& v = t.cell(c).v;
+  for (int k = 0; k < 4; ++k)
+    if (shell_factor_[v[k]] > 0 || contact_factor_[v[k]] > 0) {
+      const double patch = patch_area(c, k);
+      sum.add({shell_factor_[v[k]] * patch, contact_factor_[v[k]] * patch});
+    }
   for (int x = 0; x < 4; ++x)
     for (int y = x + 1; y < 4; ++y) {
       const Index e = s.find_edge(v[x], v[y]);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The integrals of ErodedUnion's pieces (eroded_union.cpp: the totals and
 // the cells' shares; eroded_union_shares.cpp: the per-atom split), and the
-// helpers they share. Internal: included by those two files only.
+// helpers they share (eroded_union_patch.cpp: the arcs' clipping). Internal:
+// included by those three files only.
 #pragma once
 #include <algorithm>
 #include <array>

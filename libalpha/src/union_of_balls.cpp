@@ -366,15 +366,6 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
 }
 
 CellCover UnionOfBalls::cell_cover(Index c) const {
-  return cover(c, [](Index) { return 1.0; });
-}
-
-double UnionOfBalls::cell_area(Index c, std::span<const double> ball_factor) const {
-  return cover(c, [&](Index i) { return ball_factor[i]; }).area;
-}
-
-template <class Factor>
-CellCover UnionOfBalls::cover(Index c, Factor factor) const {
   const Triangulation& t = complex_->triangulation();
   const Simplices& s = complex_->simplices();
   if (t.is_infinite(c)) return {};
@@ -382,30 +373,29 @@ CellCover UnionOfBalls::cover(Index c, Factor factor) const {
   std::array<Vec3, 4> p;
   for (int k = 0; k < 4; ++k) p[k] = t.point(v[k]);
   Sum volume, area;
-  // A term of the simplex with vertices `sv`, times the cell's fraction.
-  auto add = [&]<std::size_t N>(const Term<N>& term, const std::array<Index, N>& sv, double fraction) {
+  // A term of a simplex, times the cell's fraction.
+  auto add = [&]<std::size_t N>(const Term<N>& term, double fraction) {
     volume.add(fraction * term.volume);
-    for (std::size_t k = 0; k < N; ++k) area.add(fraction * factor(sv[k]) * term.area[k]);
+    for (std::size_t k = 0; k < N; ++k) area.add(fraction * term.area[k]);
   };
   for (int k = 0; k < 4; ++k) {
     if (!in_dual_complex_vertex(v[k])) continue;
     const double w = t.weight(v[k]);
     const Term<1> ball{4 * kPi / 3 * w * std::sqrt(w), {4 * kPi * w}};
-    add(ball, std::array<Index, 1>{v[k]},
-        solid_angle(p[k], p[(k + 1) % 4], p[(k + 2) % 4], p[(k + 3) % 4]) / (4 * kPi));
+    add(ball, solid_angle(p[k], p[(k + 1) % 4], p[(k + 2) % 4], p[(k + 3) % 4]) / (4 * kPi));
   }
   for (int e = 0; e < 6; ++e) {
     const int x = kEdge[e][0], y = kEdge[e][1];
     const Index id = s.find_edge(v[x], v[y]);
     const Term<2>& lens = edge_term_[id];
     if (lens.volume == 0 && lens.area[0] == 0 && lens.area[1] == 0) continue;
-    add(lens, s.edge(id), -dihedral_angle(p[x], p[y], p[kEdgeOthers[e][0]], p[kEdgeOthers[e][1]]) / (2 * kPi));
+    add(lens, -dihedral_angle(p[x], p[y], p[kEdgeOthers[e][0]], p[kEdgeOthers[e][1]]) / (2 * kPi));
   }
   for (int k = 0; k < 4; ++k) {
     const Index f = s.cell_triangle(c, k);
-    add(triangle_term_[f], s.triangle(f), 0.5);
+    add(triangle_term_[f], 0.5);
   }
-  add(cell_term_[c], v, -1.0);
+  add(cell_term_[c], -1.0);
   return {volume.value(), area.value()};
 }
 

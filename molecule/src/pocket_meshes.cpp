@@ -46,7 +46,7 @@ TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_
 
 double cast_spacing(double resolution, double ms_volume) {
   return kCastResolution * (resolution / kDefaultMeshResolution) *
-         std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.5, 1.0);
+         std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.25, 1.0);
 }
 
 PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {

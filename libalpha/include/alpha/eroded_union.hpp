@@ -52,12 +52,13 @@
 // (degenerate input) several triangles give the same vertex; a direction
 // in two of their cones goes to the one of smaller triangle id.
 //
-// Per cell of the triangulation the layer is split like UnionOfBalls'
-// fractional shares: a patch's shell with the patch's area share
-// (UnionOfBalls::cell_area), an arc's pieces by the cell's angular sector
-// around the arc's edge, a vertex to the cell on its side of its triangle.
-// The totals are summed from the same pieces; the finite cells' shares sum
-// to them when no ball reaches outside the convex hull.
+// Per cell of the triangulation the layer is split by regions of space
+// (share_cell's rule): a patch's shell under the part of the patch in the
+// cell's cone at the sphere's centre (patch_area, closed form), an arc's
+// pieces by the cell's angular sector around the arc's edge, a vertex to
+// the cell on its side of its triangle. The totals are summed from the
+// same pieces; the finite cells' shares sum to them when no ball reaches
+// outside the convex hull.
 //
 // Per ball (layer(per_ball)), every point goes to the power cell holding
 // it, the rule of UnionOfBalls' per-ball area and volume: ball i gets the
@@ -124,6 +125,10 @@ public:
   // The sum of the cells' shares, added in their order (quicker than
   // cell_share one by one: its scratch space is kept from cell to cell).
   LayerShare cells_share(std::span<const Index> cells) const;
+  // The area of the sphere of cell c's vertex k on the union's boundary
+  // inside the cell's cone at its centre (spanned by the directions to the
+  // other three vertices), in closed form; 0 for an infinite cell.
+  double patch_area(Index c, int k) const;
 
   // The point of F (the closure of the union's complement) nearest to a
   // point x, and the piece of the union's boundary it lies on: x itself

@@ -101,11 +101,6 @@ public:
   // zero for an infinite cell.
   CellCover cell_cover(Index c) const;
 
-  // The area part of cell_cover(c) with each ball's sphere scaled by
-  // ball_factor[i] (one per input point): e.g. the area of a surface made
-  // of the spheres' pieces shrunk about their centers.
-  double cell_area(Index c, std::span<const double> ball_factor) const;
-
   // Whether a simplex is in the dual complex K (alpha complex at 0).
   bool in_dual_complex_vertex(Index v) const;
   bool in_dual_complex_edge(Index e) const { return complex_->edge_interval(e).entry < level_; }
@@ -122,8 +117,6 @@ private:
     double volume = 0;
     std::array<double, N> area{};
   };
-  template <class Factor>
-  CellCover cover(Index c, Factor factor) const;
   const AlphaComplex* complex_;
   Index level_;  // simplices with entry rank below it are in K
   double area_ = 0, volume_ = 0;

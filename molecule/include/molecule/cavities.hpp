@@ -81,7 +81,10 @@ struct Cavity {
   // the SA surface (alpha::ErodedUnion): ms_volume adds to sa_volume the
   // probe layer under the cavity's wall (the points within one probe
   // radius of the cavity's SA space, nearest to it), ms_area is the
-  // molecular surface lining the cavity; both split by cells as above.
+  // molecular surface lining the cavity. The layer and that surface are
+  // split by regions of space (each point to the cell whose cone, wedge or
+  // side holds its nearest SA point: alpha::ErodedUnion::cell_share), the
+  // sa_volume part as above.
   double ms_volume = 0;  // A^3
   double ms_area = 0;    // A^2
   // Largest distance of a cell centroid from the outside mouths of the

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+// ErodedUnion::patch_area: a sphere's patch on the union's boundary inside
+// a cell's cone at the sphere's centre, in closed form. The cells' shares
+// give a patch's shell this area's part of it: the shell under the patch
+// split by the same cones as the rest of the layer (share_cell), a region
+// of space, where a fractional share of the patch's area was not.
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "eroded_union_integrator.hpp"
+
+namespace alpha {
+namespace {
+
+// Signed area of the geodesic triangle of unit vectors (a, b, c): positive
+// when counterclockwise seen from outside (Van Oosterom & Strackee).
+double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return 2 * std::atan2(dot(a, cross(b, c)), 1 + dot(a, b) + dot(b, c) + dot(c, a));
+}
+
+// The area of the part of the unit sphere where g.n <= h for every (g, h)
+// of `halfspaces`, all of whose points n have m.n > 0 (m unit). Stokes'
+// theorem on the form (1 - n.m) dphi, phi the longitude about m (its
+// derivative is the area element; singular only at -m, outside the part)
+// around the part's boundary, arcs of the halfspaces' circles, the part on
+// their left: an arc from a to b about the circle's centre c adds the loop
+// (m, a, the arc, b), i.e. the geodesic triangle (m, a, b) plus the cap's
+// sector from c less the triangle (c, a, b). Arcs are cut to quarter
+// turns, so that no triangle has two opposite corners.
+double sphere_part_area(std::span<const std::pair<Vec3, double>> halfspaces, const Vec3& m) {
+  Sum area;
+  std::vector<Arc> set, scratch;
+  for (std::size_t k = 0; k < halfspaces.size(); ++k) {
+    const auto& [g, h] = halfspaces[k];
+    const double length = norm(g);
+    if (h >= length) continue;  // the whole sphere: no circle
+    if (h <= -length) return 0;
+    // The part's side of the circle is the cap c.n >= cos_radius about
+    // c = -g / |g|; the arcs go round c counterclockwise (turn 1). The cap
+    // of the opposite centre (turn -1) when that is the smaller.
+    Vec3 c = (-1 / length) * g;
+    double cos_radius = -h / length, turn = 1;
+    if (cos_radius < 0) {
+      c = -1.0 * c;
+      cos_radius = -cos_radius;
+      turn = -1;
+    }
+    const Circle frame = circle_of_axis(c);
+    const double sin_radius = std::sqrt((1 - cos_radius) * (1 + cos_radius));
+    set.assign(1, {0, kTwoPi});
+    for (std::size_t j = 0; j < halfspaces.size() && !set.empty(); ++j) {
+      if (j == k) continue;
+      const auto& [gj, hj] = halfspaces[j];
+      keep_below(set, sin_radius * dot(gj, frame.e1), sin_radius * dot(gj, frame.e2), hj - cos_radius * dot(gj, c),
+                 scratch);
+    }
+    for (const Arc& a : set) {
+      const int parts = int(std::ceil(a.length / (kPi / 2)));
+      for (int p = 0; p < parts; ++p) {
+        double from = a.begin + a.length * p / parts, to = a.begin + a.length * (p + 1) / parts;
+        if (turn < 0) std::swap(from, to);
+        const Vec3 x = cos_radius * c + sin_radius * frame.radial(from);
+        const Vec3 y = cos_radius * c + sin_radius * frame.radial(to);
+        area.add(spherical_triangle_area(m, x, y) + (to - from) * (1 - cos_radius) - spherical_triangle_area(c, x, y));
+      }
+    }
+  }
+  return area.value();
+}
+
+}  // namespace
+
+double ErodedUnion::patch_area(Index c, int k) const {
+  const Triangulation& t = balls_->complex().triangulation();
+  const Simplices& s = balls_->complex().simplices();
+  if (t.is_infinite(c)) return 0;
+  const Index i = t.cell(c).v[k];
+  if (balls_->ball_areas()[i] == 0) return 0;
+  const Vec3 pi = t.point(i);
+  const double wi = t.weight(i), radius = std::sqrt(wi);
+  // The cone: its faces first (they cut most circles away at once).
+  std::array<Vec3, 3> u;
+  for (int n = 1; n < 4; ++n) {
+    const Vec3 d = t.point(t.cell(c).v[(k + n) % 4]) - pi;
+    u[n - 1] = (1 / norm(d)) * d;
+  }
+  // The cone's directions n lie within the angle acos(cos_cone) of m
+  // (the normal of the plane of u, the same dot with each u[n]).
+  Vec3 m = cross(u[1] - u[0], u[2] - u[0]);
+  m = (dot(m, u[0]) < 0 ? -1 / norm(m) : 1 / norm(m)) * m;
+  const double cos_cone = dot(m, u[0]), sin_cone = std::sqrt((1 - cos_cone) * (1 + cos_cone));
+  std::vector<std::pair<Vec3, double>> halfspaces;
+  for (int n = 0; n < 3; ++n) {
+    Vec3 inward = cross(u[(n + 1) % 3], u[(n + 2) % 3]);  // towards u[n]
+    if (dot(inward, u[n]) < 0) inward = -1.0 * inward;
+    halfspaces.push_back({-1.0 * inward, 0.0});
+  }
+  // The patch: p_i + R n outside each neighbour's ball, of those whose
+  // cap on the sphere (directions within acos(h / |g|) of g) comes within
+  // the cone's reach of m (the others cover none of it; by a margin far
+  // above rounding).
+  for (Index e : s.vertex_edges(i)) {
+    const Index j = s.edge(e)[0] == i ? s.edge(e)[1] : s.edge(e)[0];
+    const Vec3 d = t.point(j) - pi;
+    const Vec3 g = 2 * radius * d;
+    const double h = wi + dot(d, d) - t.weight(j), length = norm(g);
+    if (h >= length) continue;
+    const double cos_cap = std::max(h / length, -1.0), sin_cap = std::sqrt((1 - cos_cap) * (1 + cos_cap));
+    const double cos_reach = cos_cap * cos_cone - sin_cap * sin_cone;  // cos(cap + cone), when both sum below pi
+    const bool apart = cos_cap + cos_cone > 0 && dot(g, m) < length * (cos_reach - 1e-9);
+    if (!apart) halfspaces.push_back({g, h});
+  }
+  return wi * sphere_part_area(halfspaces, m);
+}
+
+}  // namespace alpha
