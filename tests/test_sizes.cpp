@@ -253,6 +253,44 @@ TEST_CASE("ties on an integer grid compare exactly equal", "[sizes]") {
   }
 }
 
+TEST_CASE("small fractions of integer input are the exact sizes", "[sizes]") {
+  // Unweighted and with integer weights: N / D in doubles, equal to the
+  // exact size and ordered as it; none for non-integer input.
+  for (const bool weighted : {false, true}) {
+    INFO("weighted " << weighted);
+    Input in;
+    in.pts = testing::grid_points(4);
+    if (weighted)
+      for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back(double(i % 3));
+    const SizeKernel k = in.kernel();
+    std::mt19937_64 rng(37);
+    std::vector<std::pair<SmallFraction, mpq_class>> sizes;
+    for (int trial = 0; trial < 400; ++trial) {
+      const Simplex s = random_simplex(rng, in.pts.size(), 1 + int(trial % 4));
+      if (!oracle(in, s)) continue;
+      const std::optional<SmallFraction> f = small_fraction(k, s);
+      REQUIRE(f);
+      CHECK(f->den > 0);
+      mpq_class q(mpz_class(long(f->num)), mpz_class(long(f->den)));
+      q.canonicalize();
+      CHECK(q == exact_size(k, s));
+      sizes.emplace_back(*f, exact_size(k, s));
+    }
+    int wrong = 0, ties = 0;
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j) {
+        const int c = compare_small(sizes[i].first, sizes[j].first);
+        wrong += c != sign(sizes[i].second - sizes[j].second);
+        ties += c == 0;
+      }
+    CHECK(wrong == 0);
+    CHECK(ties > 0);
+  }
+  Input half;
+  half.pts = testing::grid_points(3, 0.5);
+  CHECK(!small_fraction(half.kernel(), {1, 2, 3}));
+}
+
 TEST_CASE("congruent triangles and cospherical tetrahedra share their size", "[sizes]") {
   // Images of one triangle under the 48 symmetries of the cube and a few
   // translations, on a dyadic grid off the origin (exact in doubles).
@@ -500,13 +538,18 @@ TEST_CASE("attached: obtuse and acute triangles, points on the sphere", "[sizes]
 }
 
 TEST_CASE("attached agrees with exact power distances", "[sizes]") {
-  for (const bool grid : {false, true}) {
-    INFO("grid " << grid);
+  // Random weighted points; grids with dyadic weights (the 128-bit stage),
+  // integer weights and none (integers decided in doubles; unweighted edges
+  // have a test of their own).
+  enum Set { random, dyadic_grid, integer_grid, plain_grid };
+  for (const Set set : {random, dyadic_grid, integer_grid, plain_grid}) {
+    INFO("set " << int(set));
+    const bool grid = set != random;
     Input in;
     in.pts = grid ? testing::grid_points(4) : testing::random_points(200, 61);
-    in.w = grid ? std::vector<double>(in.pts.size(), 0.0) : testing::random_weights(200, 62, 0, 0.05);
-    if (grid)
-      for (std::size_t i = 0; i < in.w.size(); ++i) in.w[i] = 0.25 * double(i % 3);
+    if (set == random) in.w = testing::random_weights(200, 62, 0, 0.05);
+    if (set == dyadic_grid || set == integer_grid)
+      for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back((set == dyadic_grid ? 0.25 : 1.0) * double(i % 3));
     SizeKernel k = in.kernel();
     std::mt19937_64 rng(63);
     std::uniform_int_distribution<int> dim(1, 3);
@@ -532,6 +575,8 @@ TEST_CASE("attached agrees with exact power distances", "[sizes]") {
     CHECK(wrong_any == 0);
     CHECK(any_attached > 0);
     if (grid) CHECK(on_sphere > 0);
+    // Integers leave the filter's ties to doubles: no exact stage ran.
+    if (set == integer_grid || set == plain_grid) CHECK(k.stats().attached.exact == 0);
   }
 }
 

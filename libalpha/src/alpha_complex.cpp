@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "alpha/error.hpp"
@@ -185,40 +186,55 @@ void AlphaComplex::rank_critical() {
   // A run (equal values of symmetric copies, lattices; near ties) is
   // sorted on each member's exact size computed once: k exact evaluations
   // instead of O(k log k) exact comparisons, each evaluating two. Same
-  // order: a stable sort by exact value.
+  // order: a stable sort by exact value. `values` holds the sizes, `value_of`
+  // computes one (order[k]'s), `compare` orders two exactly.
   StageCounts run_compares;
-  std::vector<ExactSize> exact;
   std::vector<std::size_t> by_value;
   std::vector<Critical> run;
-  auto exact_size = [&](std::size_t k) { return exact_fraction(sizes, local(simplex(order[k].id))); };
   auto count = [&](int c) {
     ++(c != 0 ? run_compares.exact : run_compares.perturbed);
     return c;
   };
-  auto sort_run = [&](std::size_t b, std::size_t e) {
+  auto sort_run = [&](std::size_t b, std::size_t e, auto& values, auto value_of, auto compare) {
     // One value throughout (a grid's runs): already in order, one rank,
-    // and no fraction kept.
-    const ExactSize first = exact_size(b);
+    // and no value kept.
+    const auto first = value_of(b);
     std::size_t same = b + 1;
-    while (same < e && count(compare_exact(first, exact_size(same))) == 0) ++same;
+    while (same < e && count(compare(first, value_of(same))) == 0) ++same;
     if (same == e) {
       spectrum_.push_back(order[b].id);
       for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
       return;
     }
     // The members before `same` equal `first`: no need to evaluate them again.
-    exact.assign(same - b, first);
-    for (std::size_t k = same; k < e; ++k) exact.push_back(exact_size(k));
+    values.assign(same - b, first);
+    for (std::size_t k = same; k < e; ++k) values.push_back(value_of(k));
     by_value.resize(e - b);
     std::iota(by_value.begin(), by_value.end(), std::size_t(0));
-    auto compare = [&](std::size_t x, std::size_t y) { return count(compare_exact(exact[x], exact[y])); };
-    std::stable_sort(by_value.begin(), by_value.end(), [&](std::size_t x, std::size_t y) { return compare(x, y) < 0; });
+    auto order_of = [&](std::size_t x, std::size_t y) { return count(compare(values[x], values[y])); };
+    std::stable_sort(by_value.begin(), by_value.end(), [&](std::size_t x, std::size_t y) { return order_of(x, y) < 0; });
     run.assign(order.begin() + std::ptrdiff_t(b), order.begin() + std::ptrdiff_t(e));
     for (std::size_t k = b; k < e; ++k) {
       order[k] = run[by_value[k - b]];
-      if (k == b || compare(by_value[k - b - 1], by_value[k - b]) != 0) spectrum_.push_back(order[k].id);
+      if (k == b || order_of(by_value[k - b - 1], by_value[k - b]) != 0) spectrum_.push_back(order[k].id);
       set_rank(order[k].id, Index(spectrum_.size() - 1));
     }
+  };
+  // Integer input (grids) has exact sizes in doubles: no GMP for its runs.
+  std::vector<SmallFraction> small, small_values;
+  std::vector<ExactSize> exact;
+  auto sort_exactly = [&](std::size_t b, std::size_t e) {
+    small.clear();
+    for (std::size_t k = b; k < e; ++k) {
+      const std::optional<SmallFraction> f = small_fraction(sizes, local(simplex(order[k].id)));
+      if (!f) break;
+      small.push_back(*f);
+    }
+    if (small.size() == e - b)
+      sort_run(b, e, small_values, [&](std::size_t k) { return small[k - b]; }, compare_small);
+    else
+      sort_run(b, e, exact, [&](std::size_t k) { return exact_fraction(sizes, local(simplex(order[k].id))); },
+               compare_exact);
   };
   reserve_huge(spectrum_, order.size());
   for (std::size_t b = 0; b < order.size();) {
@@ -226,7 +242,7 @@ void AlphaComplex::rank_critical() {
     double reach = high(order[b]);
     while (e < order.size() && low(order[e]) <= reach) reach = std::max(reach, high(order[e])), ++e;
     if (e - b > 1) {
-      sort_run(b, e);
+      sort_exactly(b, e);
     } else {
       spectrum_.push_back(order[b].id);
       set_rank(order[b].id, Index(spectrum_.size() - 1));

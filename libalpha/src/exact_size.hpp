@@ -5,6 +5,7 @@
 #pragma once
 #include <gmpxx.h>
 
+#include <cstdint>
 #include <optional>
 
 #include "alpha/sizes.hpp"
@@ -21,6 +22,15 @@ struct ExactSize {
 int compare_exact(const ExactSize& a, const ExactSize& b);
 
 ExactSize exact_fraction(const SizeKernel& kernel, const Simplex& s);
+
+// The exact size as N / D (D > 0) in integers below 2^53, where doubles
+// compute it exactly (integer input and small simplices: grids, no GMP);
+// nothing otherwise.
+struct SmallFraction {
+  std::int64_t num, den;
+};
+std::optional<SmallFraction> small_fraction(const SizeKernel& kernel, const Simplex& s);
+int compare_small(const SmallFraction& a, const SmallFraction& b);  // exact sign of a - b
 // The exact size, reduced.
 mpq_class exact_size(const SizeKernel& kernel, const Simplex& s);
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <optional>
+#include <span>
 
 #include "alpha/error.hpp"
 #include "dyadic.hpp"
@@ -173,6 +174,22 @@ Approx length_leaf(double x, bool& ok) {
 Approx area_leaf(double x, bool& ok) {
   ok &= in_range(x, kMinArea, kMaxArea);
   return {x, std::fabs(x)};
+}
+
+// Integer input (grids) decided in doubles, where the filter cannot decide
+// a tie: when every coordinate and weight read is an integer of magnitude
+// at most 2^50, the leaves (differences) are exact integers, and so is every
+// value computed from them while its permanent stays below 2^53 (a
+// sub-expression with a larger permanent could only sit under an exactly
+// zero factor, whose leaves are all zero). Rounding is monotone, so a
+// computed permanent below 2^53 means that no step rounded.
+constexpr double kExactPermanent = 0x1p53;
+bool small_integer(double x) { return std::fabs(x) <= 0x1p50 && (x + 0x1.8p52) - 0x1.8p52 == x; }
+bool small_integers(const Vec3* pts, const double* w, std::span<const Index> ids) {
+  bool all = true;
+  for (const Index i : ids)
+    all &= small_integer(pts[i].x) & small_integer(pts[i].y) & small_integer(pts[i].z) & (!w || small_integer(w[i]));
+  return all;
 }
 
 // ---------------------------------------------------------------------------
@@ -443,6 +460,24 @@ mpq_class exact_size(const SizeKernel& kernel, const Simplex& simplex) {
   return q;
 }
 
+std::optional<SmallFraction> small_fraction(const SizeKernel& kernel, const Simplex& simplex) {
+  const Simplex s = sorted(simplex);
+  if (!small_integers(kernel.points(), kernel.weights(), std::span<const Index>(s.v.data(), std::size_t(s.n))))
+    return std::nullopt;
+  bool ok = true;  // unused: such integers neither over- nor underflow
+  const Local<Approx> l = approx_local(kernel.points(), kernel.weights(), s, ok);
+  Approx N, D;
+  size_terms(l, N, D);
+  if (!(N.p < kExactPermanent && D.p < kExactPermanent)) return std::nullopt;
+  if (D.v == 0) fail("sizes: degenerate simplex (affinely dependent points)");
+  return SmallFraction{std::int64_t(N.v), std::int64_t(D.v)};
+}
+
+int compare_small(const SmallFraction& a, const SmallFraction& b) {
+  const i128 left = i128(a.num) * b.den, right = i128(b.num) * a.den;  // D > 0; below 2^106
+  return (left > right) - (left < right);
+}
+
 int compare_exact(const ExactSize& a, const ExactSize& b) {
   // a - b has the sign of (na db 4^ua - nb da 4^ub) * sign(da db).
   mpz_class left = a.num * b.den, right = b.num * a.den;
@@ -672,7 +707,43 @@ int SizeKernel::compare(const Simplex& a, double alpha_sq) {
 
 bool SizeKernel::attached(const Simplex& s, Index q) { return attached_any(s, std::span<const Index>(&q, 1)); }
 
+namespace {
+
+// Unweighted edge ab and point q: the power distance of q to the edge's
+// smallest sphere is (a - q).(b - q). Its filter (leaves level 1, products
+// 3, sums 5: 6 u times the permanent, no range check: an over- or
+// underflow gives an infinite bound or stays under kTiny) and, for integer
+// input, its exact value. kUndecided when neither decides.
+int edge_power_sign(const Vec3* pts, Index a, Index b, Index q) {
+  const Vec3 &pa = pts[a], &pb = pts[b], &pq = pts[q];
+  const double x[3] = {pa.x - pq.x, pa.y - pq.y, pa.z - pq.z}, y[3] = {pb.x - pq.x, pb.y - pq.y, pb.z - pq.z};
+  const double value = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  const double perm = std::fabs(x[0] * y[0]) + std::fabs(x[1] * y[1]) + std::fabs(x[2] * y[2]);
+  const double e = 6 * kU * perm * kSlack + kTiny;
+  if (value > e) return 1;
+  if (value < -e) return -1;
+  const Index ids[3] = {a, b, q};
+  if (perm < kExactPermanent && small_integers(pts, nullptr, ids)) return sign(value);
+  return kUndecided;
+}
+
+}  // namespace
+
 bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs) {
+  const auto distinct = [&](Index a, Index b) {
+    return pts_[a].x != pts_[b].x || pts_[a].y != pts_[b].y || pts_[a].z != pts_[b].z;
+  };
+  if (simplex.n == 2 && !w_ && distinct(simplex.v[0], simplex.v[1])) {  // else the general code throws
+    std::size_t k = 0;
+    for (; k < qs.size(); ++k) {
+      const int sign = edge_power_sign(pts_, simplex.v[0], simplex.v[1], qs[k]);
+      if (sign == kUndecided) break;  // the general code below decides it
+      ++(sign != 0 ? stats_.attached.filtered : stats_.attached.perturbed);
+      if (sign < 0) return true;
+    }
+    if (k == qs.size()) return false;
+    qs = qs.subspan(k);
+  }
   const Simplex s = sorted(simplex);
   if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached", ErrorKind::Misuse);
   bool ok = true;
@@ -680,6 +751,7 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
   const PowerFrame<Approx> frame = power_frame(l);
   const double w0 = w_ ? w_[s.v[0]] : 0.0;
   const Vec3& p0 = pts_[s.v[0]];
+  int integers = -1;  // whether s's points are small integers, once asked
   for (const Index q : qs) {
     const double wq = w_ ? w_[q] : 0.0;
     const Vec3& pq = pts_[q];
@@ -690,6 +762,14 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
     const double e = kPower[l.k] * P.p + kTiny;
     if (ok_q && (P.v > e || P.v < -e)) {
       ++stats_.attached.filtered;
+      if (P.v < 0) return true;
+      continue;
+    }
+    if (integers < 0) integers = small_integers(pts_, w_, std::span<const Index>(s.v.data(), std::size_t(s.n)));
+    if (integers && P.p < kExactPermanent && frame.den.p < kExactPermanent &&
+        small_integers(pts_, w_, std::span<const Index>(&q, 1))) {
+      if (frame.den.v == 0) fail("attached: degenerate simplex (affinely dependent points)");
+      ++(P.v != 0 ? stats_.attached.filtered : stats_.attached.perturbed);  // decided in doubles
       if (P.v < 0) return true;
       continue;
     }
