@@ -415,8 +415,11 @@ void check_rounding(const SizeKernel& k, const Simplex& s, const mpq_class& exac
   INFO("exact size " << exact.get_str() << ", vertices " << s.v[0] << " " << s.v[1] << " " << s.v[2] << " " << s.v[3]);
   CHECK(std::bit_cast<std::uint64_t>(rounded_exact(k, s)) == want);
   CHECK(std::bit_cast<std::uint64_t>(k.rounded_size(s)) == want);
-  if (const std::optional<double> fast = rounded_filtered(k, s)) {
+  const std::optional<double> fast = rounded_filtered(k, s), portable = rounded_filtered(k, s, false);
+  CHECK(fast.has_value() == portable.has_value());  // FMA or not, the same exact products
+  if (fast) {
     CHECK(std::bit_cast<std::uint64_t>(*fast) == want);
+    CHECK(std::bit_cast<std::uint64_t>(*portable) == want);
     ++counts.decided;
   }
   counts.ties += is_midpoint(exact);

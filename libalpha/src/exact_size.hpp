@@ -38,7 +38,9 @@ mpq_class exact_size(const SizeKernel& kernel, const Simplex& s);
 // double-double arithmetic, or nothing where that cannot be certain (a
 // value near or on a midpoint of two doubles, a near-degenerate simplex,
 // values outside its range); and from the exact fraction, always.
-std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& s);
+// fma = false: Dekker's products even where the processor has an FMA (the
+// tests compare the two ways).
+std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& s, bool fma = true);
 double rounded_exact(const SizeKernel& kernel, const Simplex& s);
 
 }  // namespace alpha

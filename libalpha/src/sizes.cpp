@@ -537,13 +537,6 @@ constexpr double kTwinD[4] = {0, 5 * kU2, 9 * kU2, 13 * kU2};
 // the bounds.
 constexpr double kTwinSlack = 1 + 0x1p-40;
 
-struct Twin {
-  double hi = 0, lo = 0, p = 0;
-  Twin() = default;
-  Twin(int i) : hi(i), p(std::abs(i)) {}
-  Twin(double h, double l, double perm) : hi(h), lo(l), p(perm) {}
-};
-
 void two_sum(double a, double b, double& s, double& e) {
   s = a + b;
   const double bb = s - a;
@@ -558,32 +551,45 @@ void veltkamp(double a, double& high, double& low) {
   high = t - (t - a);
   low = a - high;
 }
-void two_prod(double a, double b, double& p, double& e) {  // Dekker: exact without FMA
+// p + e = a b exactly: with a fused multiply-add (2 operations) or Dekker's
+// product (17); the same p and e, the error of a product being unique.
+template <bool kFma> void two_prod(double a, double b, double& p, double& e) {
   p = a * b;
-  double ah, al, bh, bl;
-  veltkamp(a, ah, al);
-  veltkamp(b, bh, bl);
-  e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+  if constexpr (kFma) {
+    e = std::fma(a, b, -p);
+  } else {
+    double ah, al, bh, bl;
+    veltkamp(a, ah, al);
+    veltkamp(b, bh, bl);
+    e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+  }
 }
 
-Twin operator+(const Twin& x, const Twin& y) {
-  double sh, sl, th, tl, vh, vl, zh, zl;
-  two_sum(x.hi, y.hi, sh, sl);
-  two_sum(x.lo, y.lo, th, tl);
-  fast_two_sum(sh, sl + th, vh, vl);
-  fast_two_sum(vh, tl + vl, zh, zl);
-  return {zh, zl, x.p + y.p};
-}
-Twin operator-(const Twin& x, const Twin& y) { return x + Twin(-y.hi, -y.lo, y.p); }
-Twin operator*(const Twin& x, const Twin& y) {
-  double ch, cl, zh, zl;
-  two_prod(x.hi, y.hi, ch, cl);
-  fast_two_sum(ch, cl + (x.hi * y.lo + x.lo * y.hi), zh, zl);
-  return {zh, zl, x.p * y.p};
-}
+template <bool kFma> struct TwinOf {
+  double hi = 0, lo = 0, p = 0;
+  TwinOf() = default;
+  TwinOf(int i) : hi(i), p(std::abs(i)) {}
+  TwinOf(double h, double l, double perm) : hi(h), lo(l), p(perm) {}
+
+  friend TwinOf operator+(const TwinOf& x, const TwinOf& y) {
+    double sh, sl, th, tl, vh, vl, zh, zl;
+    two_sum(x.hi, y.hi, sh, sl);
+    two_sum(x.lo, y.lo, th, tl);
+    fast_two_sum(sh, sl + th, vh, vl);
+    fast_two_sum(vh, tl + vl, zh, zl);
+    return {zh, zl, x.p + y.p};
+  }
+  friend TwinOf operator-(const TwinOf& x, const TwinOf& y) { return x + TwinOf(-y.hi, -y.lo, y.p); }
+  friend TwinOf operator*(const TwinOf& x, const TwinOf& y) {
+    double ch, cl, zh, zl;
+    two_prod<kFma>(x.hi, y.hi, ch, cl);
+    fast_two_sum(ch, cl + (x.hi * y.lo + x.lo * y.hi), zh, zl);
+    return {zh, zl, x.p * y.p};
+  }
+};
 
 // a - b exactly, as a leaf.
-Twin exact_difference(double a, double b) {
+template <bool kFma> TwinOf<kFma> exact_difference(double a, double b) {
   double s, e;
   two_sum(a, -b, s, e);
   return {s, e, std::fabs(s) + std::fabs(e)};
@@ -591,9 +597,11 @@ Twin exact_difference(double a, double b) {
 
 // Sign of N - (c + h) D for the exact N, D within eN, eD of the Twins
 // (D > 0; h a power of two with h D normal), or 0 when not certain.
-int midpoint_side(const Twin& N, double eN, const Twin& D, double eD, double c, double h) {
+template <bool kFma>
+int midpoint_side(const TwinOf<kFma>& N, double eN, const TwinOf<kFma>& D, double eD, double c, double h) {
+  using Twin = TwinOf<kFma>;
   double p, e;
-  two_prod(c, D.hi, p, e);
+  two_prod<kFma>(c, D.hi, p, e);
   const double t = c * D.lo;  // errs by at most u |t|
   const Twin a = N - Twin(p, e, 0);
   const Twin b = a - Twin(t, 0, 0);
@@ -607,9 +615,18 @@ int midpoint_side(const Twin& N, double eN, const Twin& D, double eD, double c, 
 
 bool in_twin_range(double x, double lo, double hi) { return std::fabs(x) >= lo && std::fabs(x) <= hi; }
 
-}  // namespace
+// The neighbouring doubles of a normal c (nextafter is a library call).
+double next_up(double c) {
+  const auto bits = std::bit_cast<std::uint64_t>(c);
+  return std::bit_cast<double>(c > 0 ? bits + 1 : bits - 1);
+}
+double next_down(double c) {
+  const auto bits = std::bit_cast<std::uint64_t>(c);
+  return std::bit_cast<double>(c > 0 ? bits - 1 : bits + 1);
+}
 
-std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& simplex) {
+template <bool kFma> std::optional<double> rounded_twin(const SizeKernel& kernel, const Simplex& simplex) {
+  using Twin = TwinOf<kFma>;
   const Simplex s = sorted(simplex);
   if (s.n < 2) return std::nullopt;
   const Vec3* pts = kernel.points();
@@ -623,10 +640,10 @@ std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& 
   const Vec3& p0 = pts[s.v[0]];
   for (int i = 0; i < l.k; ++i) {
     const Vec3& q = pts[s.v[i + 1]];
-    l.u[i][0] = exact_difference(q.x, p0.x);
-    l.u[i][1] = exact_difference(q.y, p0.y);
-    l.u[i][2] = exact_difference(q.z, p0.z);
-    l.dw[i] = w ? exact_difference(w[s.v[i + 1]], w0) : Twin(0);
+    l.u[i][0] = exact_difference<kFma>(q.x, p0.x);
+    l.u[i][1] = exact_difference<kFma>(q.y, p0.y);
+    l.u[i][2] = exact_difference<kFma>(q.z, p0.z);
+    l.dw[i] = w ? exact_difference<kFma>(w[s.v[i + 1]], w0) : Twin(0);
     for (int a = 0; a < 3; ++a) length_leaf(l.u[i][a].hi, ok);
     area_leaf(l.dw[i].hi, ok);
   }
@@ -638,7 +655,7 @@ std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& 
   if (!(D.hi - eD > 0) || !in_twin_range(D.hi, 0x1p-500, 0x1p500)) return std::nullopt;
   double c = N.hi / D.hi;
   for (int step = 0; step < 4 && in_twin_range(c, 0x1p-400, 0x1p400); ++step) {
-    const double up = std::nextafter(c, HUGE_VAL), down = std::nextafter(c, -HUGE_VAL);
+    const double up = next_up(c), down = next_down(c);
     const int above = midpoint_side(N, eN, D, eD, c, (up - c) / 2);
     const int below = midpoint_side(N, eN, D, eD, c, (down - c) / 2);
     if (above < 0 && below > 0) return c;
@@ -647,6 +664,34 @@ std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& 
     else return std::nullopt;  // near a midpoint (or on it: a tie)
   }
   return std::nullopt;
+}
+
+// Where the instruction set lacks FMA (x86-64 before AVX2), a clone with it
+// for the processors that have one: everything inlined (flatten) so that
+// std::fma is the instruction, not a library call. sizes.cpp is compiled
+// with -ffp-contract=off, so that no other product and sum fuses there.
+#if defined(__FMA__) || defined(__aarch64__)
+constexpr bool kNativeFma = true;
+#else
+constexpr bool kNativeFma = false;
+#endif
+#if !defined(__FMA__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define ALPHA_FMA_CLONE 1
+__attribute__((target("fma"), flatten)) std::optional<double> rounded_fma(const SizeKernel& kernel,
+                                                                           const Simplex& s) {
+  return rounded_twin<true>(kernel, s);
+}
+#endif
+
+}  // namespace
+
+std::optional<double> rounded_filtered(const SizeKernel& kernel, const Simplex& simplex, bool fma) {
+  if (!fma) return rounded_twin<false>(kernel, simplex);
+#ifdef ALPHA_FMA_CLONE
+  static const bool has_fma = __builtin_cpu_supports("fma");
+  if (has_fma) return rounded_fma(kernel, simplex);
+#endif
+  return rounded_twin<kNativeFma>(kernel, simplex);
 }
 
 double SizeKernel::rounded_size(const Simplex& s) const {
