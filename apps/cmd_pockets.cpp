@@ -38,6 +38,7 @@
 #include "molecule/analysis.hpp"
 #include "molecule/batch_inputs.hpp"
 #include "molecule/atomic_file.hpp"
+#include "molecule/buried_surface.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/pocket_outputs.hpp"
 #include "molecule/pocket_report.hpp"
@@ -58,6 +59,7 @@ struct PocketsOptions {
   std::string outputs = "report,csv,pml,pdb,tunnels";
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
+  std::string surface_points;  // --surface-points FILE: molecule/buried_surface.hpp's points as CSV
 };
 
 // Sites shown in the summary, and its width in columns.
@@ -249,6 +251,8 @@ int run_pockets(const PocketsOptions& opt) {
   if (!opt.features.empty())
     molecule::write_file_atomically(opt.features,
                                     molecule::site_features_csv(analysis.structure, analysis.search.cavities));
+  if (!opt.surface_points.empty())
+    molecule::write_file_atomically(opt.surface_points, molecule::surface_points_csv(analysis.structure.atoms));
   if (options.outputs.meshes)
     spdlog::info("meshes: {:.3f} s at resolution {} A", out.mesh_seconds(), opt.analysis.mesh_resolution);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
@@ -295,6 +299,9 @@ Subcommand add_pockets_command(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print report.json (on one line) instead of the summary");
   sub->add_option("--features", opt->features,
                   "Also write every pocket's and void's ligandability-model features to this CSV file (for training/)");
+  sub->add_option("--surface-points", opt->surface_points,
+                  "Also write the surface points that site centres move to, with their atom counts, to this CSV file "
+                  "(for training/)");
   return {sub, [opt, sub] {
             opt->analysis.outputs = selected_outputs(*sub, opt->outputs);
             return run_pockets(*opt);

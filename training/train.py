@@ -36,6 +36,8 @@ SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void t
 MIN_SITE_PROBABILITY = 0.03   # molecule::kMinSiteProbability: candidates below it are no sites
 CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
 CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
+RECENTERING_RADIUS = 7.0      # molecule::kRecenteringRadius (A)
+BURIED_POINT_ATOMS = 95       # molecule::kBuriedPointAtoms
 LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
 TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
 
@@ -86,8 +88,9 @@ def read_ligands(path, codes):
 
 
 def run_alphapocket(exe, dataset, work, extra):
-    """Features of every cavity of every structure: list of (name, header, rows, ligands). The
-    meshes are no features: a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take no time."""
+    """Features of every cavity of every structure: list of (name, header, rows, ligands, buried surface
+    points). The meshes are no features: a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take
+    no time."""
     entries = read_ds(dataset)
     os.makedirs(work, exist_ok=True)
 
@@ -95,14 +98,17 @@ def run_alphapocket(exe, dataset, work, extra):
         file, codes = entry
         name = os.path.splitext(file)[0]
         out = os.path.join(work, name)
-        features = out + ".csv"
-        if not os.path.exists(features):
+        features, points = out + ".csv", out + ".points.csv"
+        if not (os.path.exists(features) and os.path.exists(points)):
             subprocess.run([exe, "-q", "pockets", os.path.join(dataset, file), "-o", out, "--features", features,
+                            "--surface-points", points,
                             "--tunnels-from", "none", "--ranking", "geometric",
                             "--mesh-resolution", "10"] + extra, check=True, stdout=subprocess.DEVNULL)
         with open(features) as f:
             rows = list(csv.reader(f))
-        return name, rows[0], rows[1:], read_ligands(os.path.join(dataset, file), codes)
+        surface = np.loadtxt(points, delimiter=",", skiprows=1, ndmin=2)
+        buried = surface[surface[:, 3] >= BURIED_POINT_ATOMS, :3]
+        return name, rows[0], rows[1:], read_ligands(os.path.join(dataset, file), codes), buried
     with ThreadPoolExecutor(2) as pool:
         return list(pool.map(one, entries))
 
@@ -116,7 +122,7 @@ def table(structures):
     assert header[:len(LEADING)] == LEADING and header[-len(TRAILING):] == TRAILING, header
     names = header[len(LEADING):-len(TRAILING)]
     X, dca, dcc, group, centers, ids, cpp = [], [], [], [], [], [], []
-    for g, (name, h, rows, ligands) in enumerate(structures):
+    for g, (name, h, rows, ligands, _) in enumerate(structures):
         assert h == header, name
         for r in rows:
             c = np.array([float(x) for x in r[3:6]])
@@ -151,17 +157,28 @@ def cluster_centers(centers, prob):
     return out
 
 
+def recenter(centers, buried):
+    """molecule::center_sites_on_buried_surface: each centre the mean of the buried surface points within
+    RECENTERING_RADIUS of it, if any."""
+    out = centers.copy()
+    for i, c in enumerate(centers):
+        near = buried[np.linalg.norm(buried - c, axis=1) <= RECENTERING_RADIUS]
+        if len(near):
+            out[i] = near.mean(axis=0)
+    return out
+
+
 def figures(structures, group, sites, log_score, centers, key, prob=None):
     """DCC and DCA at top-1 and top-3 of the sites (a mask) ranked by `key` (larger first; ties: the
     geometric order, by log_score, then pockets before voids, each in its order: the rows' order); with
-    `prob` (the probability ranking), at their clusters' centres."""
+    `prob` (the probability ranking), at their clusters' centres moved onto the buried surface."""
     hits = {"dcc": [0, 0], "dca": [0, 0]}
     total = 0
-    for g, (name, _, _, ligands) in enumerate(structures):
+    for g, (name, _, _, ligands, buried) in enumerate(structures):
         idx = np.where((group == g) & sites)[0]
         idx = idx[np.argsort(-log_score[idx], kind="stable")]         # geometric order first
         idx = idx[np.argsort(-key[idx], kind="stable")]
-        ranked = centers[idx] if prob is None else cluster_centers(centers[idx], prob[idx])
+        ranked = centers[idx] if prob is None else recenter(cluster_centers(centers[idx], prob[idx]), buried)
         total += len(ligands)
         for l in ligands:
             for crit in ("dcc", "dca"):
@@ -304,7 +321,7 @@ def main():
     for label, structures, g_, cand, s_, c_ in (("pockets-train", train, group, candidate, sites, centers),
                                                ("pockets-dev", dev, dgroup, dcandidate, dsites, dcenters)):
         missed = [sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & m])
-                      for g, (_, _, _, ligands) in enumerate(structures) for l in ligands) for m in (cand, s_)]
+                      for g, (_, _, _, ligands, _) in enumerate(structures) for l in ligands) for m in (cand, s_)]
         counts = [((g_ == g) & m).sum() for m in (cand, s_) for g in range(len(structures))]
         print(f"{label}: {missed[0]} ligands have no candidate centre within {HIT} A of an atom, {missed[1]} no site "
               f"centre (no ranking reaches them); median candidates {np.median(counts[:len(structures)]):g}, "

@@ -8,9 +8,11 @@
 
 #include "alpha/error.hpp"
 #include "molecule/atom_balls.hpp"
+#include "molecule/buried_surface.hpp"
 #include "molecule/ligandability_model.hpp"
 #include "molecule/site_clusters.hpp"
 #include "molecule/site_features.hpp"
+#include "molecule/site_recentering.hpp"
 
 namespace molecule {
 namespace {
@@ -50,6 +52,7 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
       return cav.cavity(a).ligandability > cav.cavity(b).ligandability;
     });
     cluster_site_centers(cav);
+    center_sites_on_buried_surface(cav, BuriedSurface(structure.atoms));
   }
   out.ranking_seconds = seconds_since(ranking_start);
   return out;
