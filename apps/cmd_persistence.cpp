@@ -39,7 +39,14 @@ int run_persistence(const InputOptions& opt) {
   const std::vector<alpha::PersistencePair>& pairs = ac.persistence();
   spdlog::info("persistence pairs: {:.3f} s", pairs_time.seconds());
   std::size_t lines = 0;
+  // Written a megabyte at a time: the whole diagram in one string would
+  // add ~40 bytes a pair to the peak memory (240 MB for 1e6 points).
   std::string out;
+  auto write = [&out] {
+    if (!out.empty() && std::fwrite(out.data(), 1, out.size(), stdout) != out.size())
+      throw std::runtime_error("cannot write to standard output");
+    out.clear();
+  };
   for (const alpha::PersistencePair& p : pairs) {
     if (p.birth == p.death) continue;  // zero length (the complex keeps none; be sure)
     out += char('0' + p.dim);
@@ -52,9 +59,9 @@ int run_persistence(const InputOptions& opt) {
       append_value(out, ac.spectrum_value(p.death));
     out += '\n';
     ++lines;
+    if (out.size() >= (std::size_t(1) << 20)) write();
   }
-  if (!out.empty() && std::fwrite(out.data(), 1, out.size(), stdout) != out.size())
-    throw std::runtime_error("cannot write to standard output");
+  write();
   flush_stdout();
   spdlog::info("{} persistence pairs", lines);
   return 0;
