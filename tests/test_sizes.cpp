@@ -262,7 +262,8 @@ TEST_CASE("small fractions of integer input are the exact sizes", "[sizes]") {
     in.pts = testing::grid_points(4);
     if (weighted)
       for (std::size_t i = 0; i < in.pts.size(); ++i) in.w.push_back(double(i % 3));
-    const SizeKernel k = in.kernel();
+    REQUIRE(all_small_integers(in.pts.data(), in.w.empty() ? nullptr : in.w.data(), in.pts.size()));
+    const SizeKernel k = in.kernel(), promised(in.pts.data(), in.w.empty() ? nullptr : in.w.data(), true);
     std::mt19937_64 rng(37);
     std::vector<std::pair<SmallFraction, mpq_class>> sizes;
     for (int trial = 0; trial < 400; ++trial) {
@@ -271,6 +272,9 @@ TEST_CASE("small fractions of integer input are the exact sizes", "[sizes]") {
       const std::optional<SmallFraction> f = small_fraction(k, s);
       REQUIRE(f);
       CHECK(f->den > 0);
+      const std::optional<SmallFraction> g = small_fraction(promised, s);  // no check of the points
+      REQUIRE(g);
+      CHECK((g->num == f->num && g->den == f->den));
       mpq_class q(mpz_class(long(f->num)), mpz_class(long(f->den)));
       q.canonicalize();
       CHECK(q == exact_size(k, s));
@@ -289,6 +293,13 @@ TEST_CASE("small fractions of integer input are the exact sizes", "[sizes]") {
   Input half;
   half.pts = testing::grid_points(3, 0.5);
   CHECK(!small_fraction(half.kernel(), {1, 2, 3}));
+  CHECK(!all_small_integers(half.pts.data(), nullptr, half.pts.size()));
+  const Vec3 large[2] = {{0, 0, 0}, {0x1p51, 0, 0}};  // an integer, but differences could round
+  CHECK(!all_small_integers(large, nullptr, 2));
+  const Vec3 unit[2] = {{0, 0, 0}, {1, 0, 0}};
+  const double weights[2] = {1, 0.5};
+  CHECK(all_small_integers(unit, weights, 1));
+  CHECK(!all_small_integers(unit, weights, 2));
 }
 
 TEST_CASE("congruent triangles and cospherical tetrahedra share their size", "[sizes]") {

@@ -38,8 +38,9 @@ public:
           points_.push_back(t.point(v));
           if (t.weighted()) weights_.push_back(t.weight(v));
         }
+    small_integers_ = all_small_integers(points_.data(), weights(), points_.size());
   }
-  SizeKernel kernel() const { return SizeKernel(points_.data(), weights_.empty() ? nullptr : weights_.data()); }
+  SizeKernel kernel() const { return SizeKernel(points_.data(), weights(), small_integers_); }
   Index operator[](Index v) const { return local_[v]; }
   Simplex operator()(Simplex s) const {
     for (int i = 0; i < s.n; ++i) s.v[i] = local_[s.v[i]];
@@ -50,6 +51,8 @@ private:
   std::vector<Index> local_;  // by input index
   std::vector<Vec3> points_;
   std::vector<double> weights_;
+  bool small_integers_ = false;  // grids: their ties decided in doubles
+  const double* weights() const { return weights_.empty() ? nullptr : weights_.data(); }
 };
 
 }  // namespace

@@ -185,11 +185,8 @@ Approx area_leaf(double x, bool& ok) {
 // computed permanent below 2^53 means that no step rounded.
 constexpr double kExactPermanent = 0x1p53;
 bool small_integer(double x) { return std::fabs(x) <= 0x1p50 && (x + 0x1.8p52) - 0x1.8p52 == x; }
-bool small_integers(const Vec3* pts, const double* w, std::span<const Index> ids) {
-  bool all = true;
-  for (const Index i : ids)
-    all &= small_integer(pts[i].x) & small_integer(pts[i].y) & small_integer(pts[i].z) & (!w || small_integer(w[i]));
-  return all;
+bool small_integer_point(const Vec3* pts, const double* w, std::size_t i) {
+  return small_integer(pts[i].x) & small_integer(pts[i].y) & small_integer(pts[i].z) & (!w || small_integer(w[i]));
 }
 
 // ---------------------------------------------------------------------------
@@ -336,6 +333,19 @@ int compare_filtered(const Size& a, const Size& b) {
 
 int compare_filtered(const Size& a, double alpha_sq) { return compare_filtered(a, Size{alpha_sq, 0}); }
 
+bool all_small_integers(const Vec3* points, const double* weights, std::size_t n) {
+  bool all = true;
+  for (std::size_t i = 0; i < n; ++i) all &= small_integer_point(points, weights, i);
+  return all;
+}
+
+bool SizeKernel::small_integers(std::span<const Index> ids) const {
+  if (small_integers_) return true;
+  bool all = true;
+  for (const Index i : ids) all &= small_integer_point(pts_, w_, i);
+  return all;
+}
+
 namespace {
 
 // The simplex with sorted indices: p0 is the smallest index, so that a
@@ -462,8 +472,7 @@ mpq_class exact_size(const SizeKernel& kernel, const Simplex& simplex) {
 
 std::optional<SmallFraction> small_fraction(const SizeKernel& kernel, const Simplex& simplex) {
   const Simplex s = sorted(simplex);
-  if (!small_integers(kernel.points(), kernel.weights(), std::span<const Index>(s.v.data(), std::size_t(s.n))))
-    return std::nullopt;
+  if (!kernel.small_integers(std::span<const Index>(s.v.data(), std::size_t(s.n)))) return std::nullopt;
   bool ok = true;  // unused: such integers neither over- nor underflow
   const Local<Approx> l = approx_local(kernel.points(), kernel.weights(), s, ok);
   Approx N, D;
@@ -759,7 +768,8 @@ namespace {
 // 3, sums 5: 6 u times the permanent, no range check: an over- or
 // underflow gives an infinite bound or stays under kTiny) and, for integer
 // input, its exact value. kUndecided when neither decides.
-int edge_power_sign(const Vec3* pts, Index a, Index b, Index q) {
+int edge_power_sign(const SizeKernel& kernel, Index a, Index b, Index q) {
+  const Vec3* pts = kernel.points();
   const Vec3 &pa = pts[a], &pb = pts[b], &pq = pts[q];
   const double x[3] = {pa.x - pq.x, pa.y - pq.y, pa.z - pq.z}, y[3] = {pb.x - pq.x, pb.y - pq.y, pb.z - pq.z};
   const double value = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
@@ -768,7 +778,7 @@ int edge_power_sign(const Vec3* pts, Index a, Index b, Index q) {
   if (value > e) return 1;
   if (value < -e) return -1;
   const Index ids[3] = {a, b, q};
-  if (perm < kExactPermanent && small_integers(pts, nullptr, ids)) return sign(value);
+  if (perm < kExactPermanent && kernel.small_integers(ids)) return sign(value);
   return kUndecided;
 }
 
@@ -781,7 +791,7 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
   if (simplex.n == 2 && !w_ && distinct(simplex.v[0], simplex.v[1])) {  // else the general code throws
     std::size_t k = 0;
     for (; k < qs.size(); ++k) {
-      const int sign = edge_power_sign(pts_, simplex.v[0], simplex.v[1], qs[k]);
+      const int sign = edge_power_sign(*this, simplex.v[0], simplex.v[1], qs[k]);
       if (sign == kUndecided) break;  // the general code below decides it
       ++(sign != 0 ? stats_.attached.filtered : stats_.attached.perturbed);
       if (sign < 0) return true;
@@ -810,9 +820,9 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
       if (P.v < 0) return true;
       continue;
     }
-    if (integers < 0) integers = small_integers(pts_, w_, std::span<const Index>(s.v.data(), std::size_t(s.n)));
+    if (integers < 0) integers = small_integers(std::span<const Index>(s.v.data(), std::size_t(s.n)));
     if (integers && P.p < kExactPermanent && frame.den.p < kExactPermanent &&
-        small_integers(pts_, w_, std::span<const Index>(&q, 1))) {
+        small_integers(std::span<const Index>(&q, 1))) {
       if (frame.den.v == 0) fail("attached: degenerate simplex (affinely dependent points)");
       ++(P.v != 0 ? stats_.attached.filtered : stats_.attached.perturbed);  // decided in doubles
       if (P.v < 0) return true;

@@ -17,6 +17,7 @@
 // The exact sizes themselves (GMP fractions) are internal: src/exact_size.hpp.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <span>
 
 #include "alpha/geometry.hpp"
@@ -62,7 +63,12 @@ struct SizeStats {
 class SizeKernel {
 public:
   // `weights` may be null (unweighted: all weights zero). Arrays are borrowed.
-  SizeKernel(const Vec3* points, const double* weights) : pts_(points), w_(weights) {}
+  // small_integers: the caller's promise that every coordinate and weight
+  // is an integer of magnitude at most 2^50 (all_small_integers checks
+  // it); their ties are then decided in doubles without checking each
+  // simplex's points (grids).
+  SizeKernel(const Vec3* points, const double* weights, bool small_integers = false)
+      : pts_(points), w_(weights), small_integers_(small_integers) {}
 
   // The filtered size: allocation-free, tens of nanoseconds.
   Size size(const Simplex& s) const;
@@ -89,11 +95,19 @@ public:
   const SizeStats& stats() const { return stats_; }
   const Vec3* points() const { return pts_; }
   const double* weights() const { return w_; }  // null: unweighted
+  // Whether the points of `ids` are integers of magnitude at most 2^50
+  // (true for all when promised).
+  bool small_integers(std::span<const Index> ids) const;
 
 private:
   const Vec3* pts_;
   const double* w_;
+  bool small_integers_;
   SizeStats stats_;
 };
+
+// Whether every coordinate and weight (null: none) of n points is an
+// integer of magnitude at most 2^50: SizeKernel's promise.
+bool all_small_integers(const Vec3* points, const double* weights, std::size_t n);
 
 }  // namespace alpha
