@@ -189,8 +189,9 @@ void AlphaComplex::rank_critical() {
   // A run (equal values of symmetric copies, lattices; near ties) is
   // sorted on each member's exact size computed once: k exact evaluations
   // instead of O(k log k) exact comparisons, each evaluating two. Same
-  // order: a stable sort by exact value. `values` holds the sizes, `value_of`
-  // computes one (order[k]'s), `compare` orders two exactly.
+  // order: a stable sort by exact value. `value_of` gives order[k]'s size
+  // (or nothing: then sort_run returns false and has changed nothing),
+  // `values` holds them, `compare` orders two exactly.
   StageCounts run_compares;
   std::vector<std::size_t> by_value;
   std::vector<Critical> run;
@@ -202,16 +203,25 @@ void AlphaComplex::rank_critical() {
     // One value throughout (a grid's runs): already in order, one rank,
     // and no value kept.
     const auto first = value_of(b);
+    if (!first) return false;
     std::size_t same = b + 1;
-    while (same < e && count(compare(first, value_of(same))) == 0) ++same;
+    for (; same < e; ++same) {
+      const auto next = value_of(same);
+      if (!next) return false;
+      if (count(compare(*first, *next)) != 0) break;
+    }
     if (same == e) {
       spectrum_.push_back(order[b].id);
       for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
-      return;
+      return true;
     }
     // The members before `same` equal `first`: no need to evaluate them again.
-    values.assign(same - b, first);
-    for (std::size_t k = same; k < e; ++k) values.push_back(value_of(k));
+    values.assign(same - b, *first);
+    for (std::size_t k = same; k < e; ++k) {
+      const auto next = value_of(k);
+      if (!next) return false;
+      values.push_back(*next);
+    }
     by_value.resize(e - b);
     std::iota(by_value.begin(), by_value.end(), std::size_t(0));
     auto order_of = [&](std::size_t x, std::size_t y) { return count(compare(values[x], values[y])); };
@@ -222,22 +232,17 @@ void AlphaComplex::rank_critical() {
       if (k == b || order_of(by_value[k - b - 1], by_value[k - b]) != 0) spectrum_.push_back(order[k].id);
       set_rank(order[k].id, Index(spectrum_.size() - 1));
     }
+    return true;
   };
-  // Integer input (grids) has exact sizes in doubles: no GMP for its runs.
-  std::vector<SmallFraction> small, small_values;
+  // Integer input (grids) has its exact sizes in doubles: no GMP for its runs.
+  std::vector<SmallFraction> small;
   std::vector<ExactSize> exact;
   auto sort_exactly = [&](std::size_t b, std::size_t e) {
-    small.clear();
-    for (std::size_t k = b; k < e; ++k) {
-      const std::optional<SmallFraction> f = small_fraction(sizes, local(simplex(order[k].id)));
-      if (!f) break;
-      small.push_back(*f);
-    }
-    if (small.size() == e - b)
-      sort_run(b, e, small_values, [&](std::size_t k) { return small[k - b]; }, compare_small);
-    else
-      sort_run(b, e, exact, [&](std::size_t k) { return exact_fraction(sizes, local(simplex(order[k].id))); },
-               compare_exact);
+    auto simplex_at = [&](std::size_t k) { return local(simplex(order[k].id)); };
+    if (sort_run(b, e, small, [&](std::size_t k) { return small_fraction(sizes, simplex_at(k)); }, compare_small))
+      return;
+    sort_run(b, e, exact, [&](std::size_t k) { return std::optional(exact_fraction(sizes, simplex_at(k))); },
+             compare_exact);
   };
   reserve_huge(spectrum_, order.size());
   for (std::size_t b = 0; b < order.size();) {
