@@ -50,7 +50,8 @@ struct Circle {
 
   Vec3 radial(double phi) const { return std::cos(phi) * e1 + std::sin(phi) * e2; }
   // The direction at angle psi from the plane, inwards from the circle's point at `radial`.
-  Vec3 ray(const Vec3& radial, double psi) const { return -std::cos(psi) * radial + std::sin(psi) * w; }
+  Vec3 ray(const Vec3& radial, double psi) const { return ray(radial, std::cos(psi), std::sin(psi)); }
+  Vec3 ray(const Vec3& radial, double cos_psi, double sin_psi) const { return -cos_psi * radial + sin_psi * w; }
   double angle(const Vec3& v) const { return wrap(std::atan2(dot(v, e2), dot(v, e1))); }
 };
 
@@ -740,16 +741,20 @@ private:
   }
 
   // keep_at_r for an arc piece's row: x = q + r (cos psi e1 + sin psi e2),
-  // psi in [lo, hi] (less than half a turn).
-  void keep_at_r(const Hood& h, const Vec3& q, const Vec3& e1, const Vec3& e2, double lo, double hi, Hood& out) const {
-    const double cl = std::cos(lo), sl = std::sin(lo), ch = std::cos(hi), sh = std::sin(hi);
+  // psi in [lo, hi] (less than half a turn; ends: cos lo, sin lo, cos hi,
+  // sin hi, the same for every row of a piece).
+  void keep_at_r(const Hood& h, const Vec3& q, const Vec3& e1, const Vec3& e2, const std::array<double, 4>& ends,
+                 Hood& out) const {
+    const auto [cl, sl, ch, sh] = ends;
     // The least and largest a cos psi + b sin psi: towards (a, b) and away
-    // from it when the arc holds those directions, else at an end.
+    // from it when the arc holds those directions, else at an end (the
+    // square root only then).
     const auto wave = [&](double a, double b) {
-      const double s = std::sqrt(a * a + b * b), at_lo = a * cl + b * sl, at_hi = a * ch + b * sh;
+      const double at_lo = a * cl + b * sl, at_hi = a * ch + b * sh;
       const double after_lo = cl * b - sl * a, before_hi = a * sh - b * ch;
-      return std::pair{after_lo <= 0 && before_hi <= 0 ? -s : std::min(at_lo, at_hi),
-                       after_lo >= 0 && before_hi >= 0 ? s : std::max(at_lo, at_hi)};
+      const bool away = after_lo <= 0 && before_hi <= 0, towards = after_lo >= 0 && before_hi >= 0;
+      const double s = away || towards ? std::sqrt(a * a + b * b) : 0;
+      return std::pair{away ? -s : std::min(at_lo, at_hi), towards ? s : std::max(at_lo, at_hi)};
     };
     // The points lie within half the chord of its midpoint.
     const Vec3 from = cl * e1 + sl * e2, to = ch * e1 + sh * e2;
@@ -988,23 +993,36 @@ private:
     const auto clear_at_r = [&](const Hood& near, const Vec3& radial, double psi) {
       return clear(near, c.o + c.rho * radial + r_ * c.ray(radial, psi), r_, none);
     };
+    // The rows' circle points and the nodes' directions about them, each
+    // computed once (the same values as computed in place).
+    std::array<Vec3, 8> radials;
+    std::array<double, 8> cos_psi, sin_psi;
+    for (int k = 0; k < 8; ++k) {
+      radials[k] = c.radial(node(begin, end, k));
+      const double psi = node(psi_i, psi_j, k);
+      cos_psi[k] = std::cos(psi);
+      sin_psi[k] = std::sin(psi);
+    }
+    const std::array<double, 4> ends{std::cos(psi_i), std::sin(psi_i), std::cos(psi_j), std::sin(psi_j)};
     std::array<std::array<bool, 8>, 8> at_r;
     all_clear = true;
     for (int i = 0; i < 8; ++i) {
-      const Vec3 radial = c.radial(node(begin, end, i));
-      keep_at_r(h, c.o + c.rho * radial, (-1.0) * radial, c.w, psi_i, psi_j, at_r_[i]);
+      const Vec3& radial = radials[i];
+      const Vec3 q = c.o + c.rho * radial;
+      keep_at_r(h, q, (-1.0) * radial, c.w, ends, at_r_[i]);
       for (int j = 0; j < 8; ++j)
-        all_clear = (at_r[i][j] = clear_at_r(at_r_[i], radial, node(psi_i, psi_j, j))) && all_clear;
+        all_clear = (at_r[i][j] = clear(at_r_[i], q + r_ * c.ray(radial, cos_psi[j], sin_psi[j]), r_, none)) && all_clear;
     }
     if (all_clear)
       return {(end - begin) * wedge_volume(c.rho, r_, psi_i, psi_j), (end - begin) * wedge_area(c.rho, r_, psi_i, psi_j)};
-    for (int i = 0; i < 8; ++i) narrow(h, c.o + c.rho * c.radial(node(begin, end, i)), r_, rows_[i]);
+    for (int i = 0; i < 8; ++i) narrow(h, c.o + c.rho * radials[i], r_, rows_[i]);
     // Per phi, psi in pieces where the eroded surface is there (closed
     // forms) or cut off (the rays' volumes up to tau).
     LayerShare out;
     for (int i = 0; i < 8; ++i) {
       const double w = weight(begin, end, i);
-      const Vec3 radial = c.radial(node(begin, end, i)), q = c.o + c.rho * radial;
+      const Vec3& radial = radials[i];
+      const Vec3 q = c.o + c.rho * radial;
       // A change between two nodes is located among the points at r
       // between them: against the part of the row's hood near their arc.
       const Hood* near = &at_r_[i];
@@ -1020,9 +1038,12 @@ private:
           out.area += w * wedge_area(c.rho, r_, g.lo, g.hi);
           continue;
         }
+        // A segment of the whole row has the rows' nodes.
+        const bool whole = g.lo == psi_i && g.hi == psi_j;
         for (int j = 0; j < 8; ++j) {
-          const double psi = node(g.lo, g.hi, j);
-          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, std::cos(psi), cut(rows_[i], q, c.ray(radial, psi), none));
+          const double psi = node(g.lo, g.hi, j), cs = whole ? cos_psi[j] : std::cos(psi);
+          const Vec3 u = c.ray(radial, cs, whole ? sin_psi[j] : std::sin(psi));
+          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, cs, cut(rows_[i], q, u, none));
         }
       }
     }
