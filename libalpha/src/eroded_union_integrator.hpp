@@ -104,20 +104,31 @@ struct SphericalTriangle {
   double gamma;  // the angle from b to c
   explicit SphericalTriangle(const std::array<Vec3, 3>& d)
       : dir(d), gamma(std::atan2(norm(cross(d[1], d[2])), dot(d[1], d[2]))) {}
-  Vec3 direction(double s, double sigma, double* jacobian) const {
+  // What the directions at one sigma share: m, theta, sin theta and the
+  // jacobian's factor |a.(m x m')| (none where the triangle is flat).
+  struct Meridian {
+    Vec3 m;
+    double theta, st, turn = 0;
+    bool flat = true;
+  };
+  Meridian meridian(double sigma) const {
     const double sg = std::sin(gamma);
     const Vec3 m = sg > 0 ? (1 / sg) * (std::sin((1 - sigma) * gamma) * dir[1] + std::sin(sigma * gamma) * dir[2])
                           : dir[1];
     const double theta = std::atan2(norm(cross(dir[0], m)), dot(dir[0], m)), st = std::sin(theta);
-    if (jacobian) {
-      *jacobian = 0;  // a flat triangle
-      if (st > 0 && sg > 0) {
-        const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
-        *jacobian = std::sin(s * theta) * theta * std::fabs(dot(dir[0], cross(m, dm))) / (st * st);
-      }
+    Meridian out{m, theta, st};
+    if (st > 0 && sg > 0) {
+      const Vec3 dm = (gamma / sg) * (-std::cos((1 - sigma) * gamma) * dir[1] + std::cos(sigma * gamma) * dir[2]);
+      out.turn = std::fabs(dot(dir[0], cross(m, dm)));
+      out.flat = false;
     }
-    return st > 0 ? (1 / st) * (std::sin((1 - s) * theta) * dir[0] + std::sin(s * theta) * m) : dir[0];
+    return out;
   }
+  Vec3 direction(double s, const Meridian& a, double* jacobian) const {
+    if (jacobian) *jacobian = a.flat ? 0 : std::sin(s * a.theta) * a.theta * a.turn / (a.st * a.st);
+    return a.st > 0 ? (1 / a.st) * (std::sin((1 - s) * a.theta) * dir[0] + std::sin(s * a.theta) * a.m) : dir[0];
+  }
+  Vec3 direction(double s, double sigma, double* jacobian) const { return direction(s, meridian(sigma), jacobian); }
 };
 
 using Nearest = ErodedUnion::Nearest;
@@ -512,10 +523,16 @@ public:
     const auto clear_at_r = [&](double s, double sigma) {
       return clear(*near_r, vx.p + r_ * cone.direction(s, sigma, nullptr), r_, v);
     };
+    // The nodes' sigma, each computed once.
+    std::array<SphericalTriangle::Meridian, 8> meridians;
+    for (int j = 0; j < 8; ++j) meridians[j] = cone.meridian(node(0, 1, j));
     std::array<std::array<bool, 8>, 8> at_r;
     bool all_clear = true;
     for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) all_clear = (at_r[i][j] = clear_at_r(node(0, 1, i), node(0, 1, j))) && all_clear;
+      for (int j = 0; j < 8; ++j)
+        all_clear =
+            (at_r[i][j] = clear(*near_r, vx.p + r_ * cone.direction(node(0, 1, i), meridians[j], nullptr), r_, v)) &&
+            all_clear;
     LayerShare out;
     if (all_clear) {
       const double omega = solid_angle({}, dir[0], dir[1], dir[2]);
@@ -528,9 +545,11 @@ public:
       for (const Segment& g : segments(0, 1, at_r[i], [&](double sigma) { return clear_at_r(s, sigma); }))
         for (int j = 0; j < 8; ++j) {
           double jac;
-          const Vec3 u = cone.direction(s, node(g.lo, g.hi, j), &jac);
+          // A segment of the whole row has the nodes' sigma.
+          const Vec3 u = g.lo == 0 && g.hi == 1 ? cone.direction(s, meridians[j], &jac)
+                                                : cone.direction(s, node(g.lo, g.hi, j), &jac);
           const double w = weight(0, 1, i) * weight(g.lo, g.hi, j) * jac;
-          const double tau = g.holds ? r_ : cut(hood, vx.p, u, v);
+          const double tau = g.holds ? r_ : cut(hood, vx.p, u, v, near_r);
           out.volume += w * tau * tau * tau / 3;
           if (g.holds) out.area += w * r_ * r_;
         }
@@ -949,9 +968,20 @@ private:
   // The cut distance tau(q, u), at most r: where the nearer point found
   // says, when the test confirms it (clear there, not just beyond), else by
   // bisection on the test.
-  double cut(const Hood& h, const Vec3& q, const Vec3& u, std::size_t self) const {
+  // `at_r`: a part of h (in h's order) holding all that clear() can find
+  // at q + r u, which answers the test there (mostly a scan up to the point
+  // found) from fewer pieces.
+  double cut(const Hood& h, const Vec3& q, const Vec3& u, std::size_t self, const Hood* at_r = nullptr) const {
     Nearer nearer;
-    if (clear(h, q + r_ * u, r_, self, &nearer)) return r_;
+    if (at_r && at_r != &h) {
+      // The first point found in the part is the first in h (h's order):
+      // its index in h.
+      if (clear(*at_r, q + r_ * u, r_, self, &nearer)) return r_;
+      if (!index_in(h, *at_r, nearer) && clear(h, q + r_ * u, r_, self, &nearer)) return r_;
+      if (nearer.kind != Nearer::kNone) h.last = nearer;
+    } else if (clear(h, q + r_ * u, r_, self, &nearer)) {
+      return r_;
+    }
     double lo = 0, hi = r_;
     // Below a thousand tolerances the test's answers are rounding noise.
     for (int tries = 0; tries < 4; ++tries) {
@@ -979,6 +1009,29 @@ private:
       (clear(*near, q + mid * u, mid, self) ? lo : hi) = mid;
     }
     return lo;
+  }
+
+  // n, found in `part` (a part of h), as the index of the same piece in h;
+  // false if h does not hold it.
+  static bool index_in(const Hood& h, const Hood& part, Nearer& n) {
+    const auto find = [&](const auto& list, const auto& same) {
+      for (std::size_t k = 0; k < list.size(); ++k)
+        if (same(list[k])) {
+          n.which = k;
+          return true;
+        }
+      return false;
+    };
+    switch (n.kind) {
+      case Nearer::kBall:
+        return find(h.balls, [&](const Hood::Ball& b) { return b.id == part.balls[n.which].id; });
+      case Nearer::kCircle:
+        return find(h.circles, [&](const auto& c) { return c.first == part.circles[n.which].first; });
+      case Nearer::kVertex:
+        return find(h.vertices, [&](std::size_t v) { return v == part.vertices[n.which]; });
+      case Nearer::kNone: break;
+    }
+    return true;
   }
 
   // The toroidal piece of circle c for phi in [begin, end].
@@ -1043,7 +1096,7 @@ private:
         for (int j = 0; j < 8; ++j) {
           const double psi = node(g.lo, g.hi, j), cs = whole ? cos_psi[j] : std::cos(psi);
           const Vec3 u = c.ray(radial, cs, whole ? sin_psi[j] : std::sin(psi));
-          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, cs, cut(rows_[i], q, u, none));
+          out.volume += w * weight(g.lo, g.hi, j) * ray_volume(c.rho, cs, cut(rows_[i], q, u, none, &at_r_[i]));
         }
       }
     }

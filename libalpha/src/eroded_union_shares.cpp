@@ -163,7 +163,7 @@ void ErodedUnion::Integrator::arc_shares(const Circle& c, double begin, double e
         for (int j = 0; j < 8; ++j) {
           const double psi = node(g.lo, g.hi, j), cs = std::cos(psi);
           const Vec3 u = c.ray(radial, psi);
-          const double tau = g.holds ? r_ : cut(rows_[i], q, u, none);
+          const double tau = g.holds ? r_ : cut(rows_[i], q, u, none, &at_r_[i]);
           split_ray(
               sites, q, u, tau, w * weight(g.lo, g.hi, j), g.holds ? std::fabs(c.rho - r_ * cs) * r_ : 0,
               [&](double t) { return ray_volume(c.rho, cs, t); }, out);
