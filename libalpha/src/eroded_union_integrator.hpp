@@ -764,7 +764,7 @@ private:
   // sin hi, the same for every row of a piece).
   void keep_at_r(const Hood& h, const Vec3& q, const Vec3& e1, const Vec3& e2, const std::array<double, 4>& ends,
                  Hood& out) const {
-    const auto [cl, sl, ch, sh] = ends;
+    const double cl = ends[0], sl = ends[1], ch = ends[2], sh = ends[3];  // not a binding: lambdas use them
     // The least and largest a cos psi + b sin psi: towards (a, b) and away
     // from it when the arc holds those directions, else at an end (the
     // square root only then).
