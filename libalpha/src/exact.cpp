@@ -60,15 +60,8 @@ template <class T> T det4(const T r[4][4]) {
 }
 
 // Integer input (grids of unit spacing, integer coordinates and weights):
-// whether v is an integer (adding and removing 1.5 * 2^52 rounds it to one;
-// integers beyond 2^51 may be missed, which only sends them to the stages
-// below). Differences of integers that come out small are exact.
-bool is_integer(double v) {
-  constexpr double kRound = 0x1.8p52;
-  return (v + kRound) - kRound == v;
-}
-
-bool is_integer(const Vec3& v) { return is_integer(v.x) & is_integer(v.y) & is_integer(v.z); }
+// differences of integers that come out small are exact.
+bool is_integer(const Vec3& v) { return exact::is_integer(v.x) & exact::is_integer(v.y) & exact::is_integer(v.z); }
 
 }  // namespace
 

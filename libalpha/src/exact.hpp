@@ -9,6 +9,15 @@
 
 namespace alpha::exact {
 
+// Whether v is an integer: adding and removing 1.5 * 2^52 rounds it to one
+// (integers beyond 2^51 may be missed, which only sends them to the exact
+// stages). Integer input (grids) is decided in doubles where its values
+// stay small.
+inline bool is_integer(double v) {
+  constexpr double kRound = 0x1.8p52;
+  return (v + kRound) - kRound == v;
+}
+
 // Sign of det[b-a, c-a, d-a].
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

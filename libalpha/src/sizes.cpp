@@ -12,6 +12,7 @@
 
 #include "alpha/error.hpp"
 #include "dyadic.hpp"
+#include "exact.hpp"
 #include "exact_size.hpp"
 
 namespace alpha {
@@ -184,7 +185,7 @@ Approx area_leaf(double x, bool& ok) {
 // zero factor, whose leaves are all zero). Rounding is monotone, so a
 // computed permanent below 2^53 means that no step rounded.
 constexpr double kExactPermanent = 0x1p53;
-bool small_integer(double x) { return std::fabs(x) <= 0x1p50 && (x + 0x1.8p52) - 0x1.8p52 == x; }
+bool small_integer(double x) { return std::fabs(x) <= 0x1p50 && exact::is_integer(x); }
 bool small_integer_point(const Vec3* pts, const double* w, std::size_t i) {
   return small_integer(pts[i].x) & small_integer(pts[i].y) & small_integer(pts[i].z) & (!w || small_integer(w[i]));
 }
