@@ -681,15 +681,15 @@ private:
     std::sort(h.vertices.begin(), h.vertices.end());
   }
 
-  // Into `out`, what of h (gathered for a wider reach) clear() can find or
-  // be inside at points within `reach` of x tested at distances t up to
-  // `within` (at most r), in h's order.
   // Whether a buried ball (centre c, squared radius w) is kept for the
   // points within reach of center: nearest() asks whether they are inside.
   bool buried_near(const Vec3& c, double w, const Vec3& center, double reach) const {
     return norm(c - center) < std::sqrt(w) + reach + tol_;
   }
 
+  // Into `out`, what of h (gathered for a wider reach) clear() can find or
+  // be inside at points within `reach` of x tested at distances t up to
+  // `within` (at most r), in h's order.
   void narrow(const Hood& h, const Vec3& x, double reach, Hood& out) const { narrow(h, x, reach, r_, out); }
   void narrow(const Hood& h, const Vec3& x, double reach, double within, Hood& out) const {
     const double radius = reach + within + 2 * tol_;
