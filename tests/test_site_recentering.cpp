@@ -4,7 +4,8 @@
 // other, one per cube, every free lattice point's cube kept, the atom
 // counts; and the site centres (molecule/site_recentering.hpp): the mean
 // of the buried points within the radius, recomputed by brute force, or
-// the old centre where there is none.
+// the old centre where there is none; the surface built only around the
+// centres gives the same points there.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -94,6 +95,19 @@ TEST_CASE("site recentering: each site at the mean of the buried points near its
     moved += n > 0;
   }
   CHECK(moved >= 3);
+  // The surface built only around the centres (as search_pockets does)
+  // has the same points near each, in the same order, and fewer in all.
+  std::vector<Vec3> centers;
+  for (const molecule::Site& site : clustered.sites) centers.push_back(site.center);
+  const molecule::BuriedSurface near(s.atoms, centers, molecule::kRecenteringRadius);
+  CHECK(near.points().size() < surface.points().size());
+  for (const Vec3& c : centers) {
+    std::vector<Vec3> whole, local;
+    surface.visit_buried(c, molecule::kRecenteringRadius, [&](const Vec3& p) { whole.push_back(p); });
+    near.visit_buried(c, molecule::kRecenteringRadius, [&](const Vec3& p) { local.push_back(p); });
+    CHECK(!whole.empty());
+    CHECK(local == whole);
+  }
   // A site far from the molecule keeps its centre.
   molecule::Cavities far = clustered;
   far.sites.resize(1);

@@ -32,19 +32,41 @@ const std::vector<Vec3>& lattice() {
 
 BuriedSurface::BuriedSurface(const std::vector<Atom>& atoms)
     : atoms_(atoms), atom_grid_(4), grid_(kBuriedPointRadius / 2) {
-  double reach = 0;  // the largest sphere's radius
-  for (Index i = 0; i < atoms.size(); ++i) {
-    atom_grid_.add(atoms[i].position, i);
-    reach = std::max(reach, atoms[i].radius + kSurfacePointProbe);
+  index_atoms();
+  sample(std::vector<char>(atoms.size(), 1));
+}
+
+BuriedSurface::BuriedSurface(const std::vector<Atom>& atoms, std::span<const Vec3> centers, double radius)
+    : atoms_(atoms), atom_grid_(4), grid_(kBuriedPointRadius / 2) {
+  index_atoms();
+  // The points within `radius` of a centre are the whole surface's: every
+  // point of their cubes comes from an atom within radius + a cube's
+  // diagonal + the largest sphere of it (1 A more: far above rounding).
+  const double near = radius + std::sqrt(3.0) * kSurfacePointSpacing + reach_ + 1;
+  std::vector<char> sampled(atoms.size(), 0);
+  for (const Vec3& c : centers)
+    atom_grid_.visit(c, near, [&](Index i) { sampled[i] |= norm(atoms[i].position - c) <= near; });
+  sample(sampled);
+}
+
+void BuriedSurface::index_atoms() {
+  for (Index i = 0; i < atoms_.size(); ++i) {
+    atom_grid_.add(atoms_[i].position, i);
+    reach_ = std::max(reach_, atoms_[i].radius + kSurfacePointProbe);
   }
   atom_grid_.finish();
+}
+
+void BuriedSurface::sample(const std::vector<char>& sampled) {
+  const std::vector<Atom>& atoms = atoms_;
   // Lattice points outside every other atom's sphere, keyed by their cube.
   std::vector<std::tuple<std::array<std::int64_t, 3>, std::size_t, Vec3>> kept;
   std::vector<std::pair<Vec3, double>> overlapping;  // the spheres meeting atom i's: centre, squared radius
   for (Index i = 0; i < atoms.size(); ++i) {
+    if (!sampled[i]) continue;
     const double r = atoms[i].radius + kSurfacePointProbe;
     overlapping.clear();
-    atom_grid_.visit(atoms[i].position, r + reach, [&](Index j) {
+    atom_grid_.visit(atoms[i].position, r + reach_, [&](Index j) {
       const double rj = atoms[j].radius + kSurfacePointProbe;
       if (j != i && norm(atoms[j].position - atoms[i].position) < r + rj)
         overlapping.emplace_back(atoms[j].position, rj * rj);

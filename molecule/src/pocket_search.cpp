@@ -52,7 +52,9 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
       return cav.cavity(a).ligandability > cav.cavity(b).ligandability;
     });
     cluster_site_centers(cav);
-    center_sites_on_buried_surface(cav, BuriedSurface(structure.atoms));
+    std::vector<alpha::Vec3> centers;
+    for (const Site& s : cav.sites) centers.push_back(s.center);
+    center_sites_on_buried_surface(cav, BuriedSurface(structure.atoms, centers, kRecenteringRadius));
   }
   out.ranking_seconds = seconds_since(ranking_start);
   return out;

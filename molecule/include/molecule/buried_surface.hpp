@@ -9,6 +9,7 @@
 // kBuriedPointRadius of it (P2Rank's protrusion), the surface of a groove
 // or pocket rather than of a knob.
 #pragma once
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ inline constexpr int kBuriedPointAtoms = 95;
 class BuriedSurface {
 public:
   explicit BuriedSurface(const std::vector<Atom>& atoms);
+  // Only what is near `centers`: the points within `radius` of one of them
+  // are the whole surface's, in the same order (the thinning per cube is
+  // local); points farther away may be missing or differ.
+  BuriedSurface(const std::vector<Atom>& atoms, std::span<const alpha::Vec3> centers, double radius);
   // The surface points, in order (buried or not).
   const std::vector<alpha::Vec3>& points() const { return points_; }
   // The atoms within kBuriedPointRadius of points()[k], counted when first
@@ -40,8 +45,13 @@ public:
   }
 
 private:
+  void index_atoms();
+  // The points of the atoms with sampled[i] set.
+  void sample(const std::vector<char>& sampled);
+
   const std::vector<Atom>& atoms_;
   alpha::PointGrid atom_grid_, grid_;
+  double reach_ = 0;  // the largest sphere's radius
   std::vector<alpha::Vec3> points_;
   mutable std::vector<int> atoms_near_;  // -1: not counted yet
 };
