@@ -18,6 +18,11 @@ double clearance_at(const Vec3& x, const Vertices& vs, const Triangulation& t, s
   return d;
 }
 
+// The vertex of cell v not in triangle tri.
+Index apex(const std::array<Index, 4>& v, const std::array<Index, 3>& tri) {
+  return v[0] + v[1] + v[2] + v[3] - tri[0] - tri[1] - tri[2];
+}
+
 }  // namespace
 
 VoidGraph::VoidGraph(const AlphaComplex& ac, std::span<const double> radii)
@@ -46,16 +51,13 @@ VoidGraph::VoidGraph(const AlphaComplex& ac, std::span<const double> radii)
       at = sizes.center(simplex);  // the orthocentre lies on the dual segment
     } else {
       // The cell whose opposite vertex attaches f holds the narrowest point;
-      // an infinite cell has no vertex that could.
-      Index attaching = kNone;
-      for (const Index c : cells) {
-        if (t.is_infinite(c)) continue;
-        for (int k = 0; k < 4; ++k) {
-          const Index q = t.cell(c).v[k];
-          if (q != tri[0] && q != tri[1] && q != tri[2] && sizes.attached(simplex, q)) attaching = c;
-        }
-      }
-      if (attaching == kNone) attaching = t.is_infinite(cells[0]) ? cells[1] : cells[0];  // unreachable in exact terms
+      // an infinite cell has no vertex that could. Exactly one does (both
+      // would put each cell's orthocentre beyond f's plane on the other's
+      // side, against each apex's positive power to the other cell's
+      // orthosphere): one test decides.
+      Index attaching = t.is_infinite(cells[0]) ? cells[1] : cells[0];
+      const Index other = attaching == cells[0] ? cells[1] : cells[0];
+      if (!t.is_infinite(other) && !sizes.attached(simplex, apex(t.cell(attaching).v, tri))) attaching = other;
       at = position_[attaching];
     }
     narrowest_[f] = at;
