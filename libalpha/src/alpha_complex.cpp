@@ -257,7 +257,7 @@ void AlphaComplex::rank_critical() {
     }
     b = e;
   }
-  order = {};
+  order = std::vector<Critical>();  // (= {} would keep the capacity)
   spectrum_.shrink_to_fit();
 
   size_stats_ = sizes.stats();

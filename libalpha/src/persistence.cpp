@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <numeric>
+#include <span>
 #include <tuple>
 
 #include "alpha/error.hpp"
@@ -172,56 +173,72 @@ RankedBits complement_pairs(const Triangulation& t, const Simplices& s, const Fi
 
 // Dimension 1: reduces the boundaries of the cycle-killing triangles,
 // restricted to cycle-creating edges, in filtration order. Columns hold edge
-// positions; a reduced column is kept (its length, then its entries in
-// decreasing order), found through its pivot. Marks the paired edges 2 in
-// creates_cycle.
+// positions and are found through their pivots. Most columns need no
+// addition and most reduced ones have at most three entries: a reduced
+// column stays in its triangle's boundary slot (kNone pads), and only a
+// longer one goes to `longer` (its length, then its entries), the slot then
+// holding kLonger and the offset. Marks the paired edges 2 in creates_cycle.
 void cycle_pairs(const Simplices& s, const std::vector<std::uint64_t>& edges,
                  const std::vector<std::uint64_t>& triangles, std::vector<Index> position, const RankedBits& kills,
                  std::vector<char>& creates_cycle, Pairs& pairs) {
   std::vector<Index> edge_position;
   assign_huge(edge_position, edges.size());
   for (Index k = 0; k < edges.size(); ++k) edge_position[id_of(edges[k])] = k;
-  // The boundaries, by killing triangle in filtration order (kNone pads).
-  std::vector<std::array<Index, 3>> boundary;
-  assign_huge(boundary, kills.count());
+  // The boundaries, by killing triangle in filtration order.
+  using Slot = std::array<Index, 3>;
+  std::vector<Slot> slots;
+  assign_huge(slots, kills.count());
   for (Index f = 0; f < triangles.size(); ++f) {
     if (!kills.test(position[f])) continue;
-    auto& b = boundary[kills.rank(position[f])];
+    Slot& b = slots[kills.rank(position[f])];
     for (int i = 0; i < 3; ++i) {
       const Index e = s.triangle_edges(f)[i];
       b[i] = creates_cycle[e] ? edge_position[e] : kNone;
     }
   }
-  position = {};
-  edge_position = {};
-  std::vector<Index> reduced_at;  // by pivot position: offset in `reduced`
+  // (Assigning {} would keep the capacity.)
+  position = std::vector<Index>();
+  edge_position = std::vector<Index>();
+  constexpr Index kLonger = kNone - 1;  // above any edge position
+  std::vector<Index> reduced_at;        // by pivot position: the slot
   assign_huge(reduced_at, edges.size(), kNone);
-  std::vector<Index> reduced;
-  // Reduced columns average under 3 entries: reserving (address space,
-  // not memory until written) avoids the copies of a growing vector.
-  reserve_huge(reduced, 8 * std::size_t(kills.count()));
+  std::vector<Index> longer;
+  auto column_of = [&](const Slot& b) {
+    return b[0] == kLonger ? std::span<const Index>(longer.data() + b[1] + 1, longer[b[1]]) : std::span<const Index>(b);
+  };
   HeapColumn column;
-  Index next = 0;  // the next killing triangle
+  std::vector<Index> reduced;
+  Index next = 0;  // the next killing triangle's slot
   for (Index k = 0; k < triangles.size(); ++k) {
     if (!kills.test(k)) continue;
-    column.clear();
-    for (const Index e : boundary[next++])
-      if (e != kNone) column.push(e);
-    Index p = column.pivot();
-    for (; p != kNone && reduced_at[p] != kNone; p = column.pivot()) {
-      const Index* other = reduced.data() + reduced_at[p];
-      for (Index i = 1; i <= other[0]; ++i) column.push(other[i]);
+    Slot& b = slots[next++];
+    Index p = kNone;  // the largest entry
+    for (const Index e : b)
+      if (e != kNone && (p == kNone || e > p)) p = e;
+    if (p != kNone && reduced_at[p] != kNone) {
+      column.clear();
+      for (const Index e : b)
+        if (e != kNone) column.push(e);
+      for (; p != kNone && reduced_at[p] != kNone; p = column.pivot())
+        for (const Index e : column_of(slots[reduced_at[p]]))
+          if (e != kNone) column.push(e);
+      reduced.clear();
+      for (Index x = column.pop_pivot(); x != kNone; x = column.pop_pivot()) reduced.push_back(x);
+      b.fill(kNone);
+      if (reduced.size() <= b.size()) {
+        std::copy(reduced.begin(), reduced.end(), b.begin());
+      } else {
+        b = {kLonger, Index(longer.size()), kNone};
+        longer.push_back(Index(reduced.size()));
+        longer.insert(longer.end(), reduced.begin(), reduced.end());
+        if (longer.size() >= kLonger) fail("persistence: too many reduced entries for 32-bit offsets", ErrorKind::LimitExceeded);
+      }
     }
     if (p == kNone) continue;  // cannot happen for a killing triangle
     const std::uint64_t edge = edges[p];
     pairs.add({1, rank_of(edge), rank_of(triangles[k]), id_of(edge), id_of(triangles[k])});
     creates_cycle[id_of(edge)] = 2;
-    const std::size_t at = reduced.size();
-    reduced.push_back(0);
-    for (Index x = column.pop_pivot(); x != kNone; x = column.pop_pivot()) reduced.push_back(x);
-    if (reduced.size() >= kNone) fail("persistence: too many reduced entries for 32-bit offsets", ErrorKind::LimitExceeded);
-    reduced[at] = Index(reduced.size() - at - 1);
-    reduced_at[p] = Index(at);
+    reduced_at[p] = next - 1;
   }
 }
 
