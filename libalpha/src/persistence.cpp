@@ -2,7 +2,6 @@
 #include "alpha/persistence.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <numeric>
 #include <span>
 #include <tuple>
@@ -47,58 +46,38 @@ std::vector<std::uint64_t> filtration_order(const std::vector<Index>& rank) {
 Index id_of(std::uint64_t keyed) { return Index(keyed); }
 Index rank_of(std::uint64_t keyed) { return Index(keyed >> 32); }
 
-// A set of positions 0..n-1, with the rank of a member (how many members
-// precede it) in constant time once indexed.
-class RankedBits {
-public:
-  explicit RankedBits(std::size_t n) : bits_((n + 63) / 64, 0) {}
-  void set(std::size_t k) { bits_[k >> 6] |= std::uint64_t(1) << (k & 63); }
-  bool test(std::size_t k) const { return bits_[k >> 6] >> (k & 63) & 1; }
-  void index() {
-    before_.resize(bits_.size() + 1);
-    before_[0] = 0;
-    for (std::size_t w = 0; w < bits_.size(); ++w) before_[w + 1] = before_[w] + Index(std::popcount(bits_[w]));
-  }
-  Index rank(std::size_t k) const {
-    return before_[k >> 6] + Index(std::popcount(bits_[k >> 6] & ((std::uint64_t(1) << (k & 63)) - 1)));
-  }
-  Index count() const { return before_.back(); }
-
-private:
-  std::vector<std::uint64_t> bits_;
-  std::vector<Index> before_;  // members before each word
-};
-
-// A column of the dimension-1 reduction, as a max-heap of edge positions
-// with repeats: over Z/2, equal entries cancel in pairs when they reach the
-// top. Adding a short column to a long one then costs the short one's
-// length (times a logarithm), not the long one's.
+// A column of the dimension-1 reduction, as a max-heap of edge keys (the
+// filtration order's rank << 32 | id) with repeats: over Z/2, equal entries
+// cancel in pairs when they reach the top. Adding a short column to a long
+// one then costs the short one's length (times a logarithm), not the long
+// one's.
 class HeapColumn {
 public:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
   void clear() { heap_.clear(); }
-  void push(Index x) {
+  void push(std::uint64_t x) {
     heap_.push_back(x);
     std::push_heap(heap_.begin(), heap_.end());
   }
-  // The largest entry present an odd number of times, or kNone.
-  Index pivot() {
+  // The largest entry present an odd number of times, or kEmpty.
+  std::uint64_t pivot() {
     while (!heap_.empty()) {
-      const Index top = heap_[0];
+      const std::uint64_t top = heap_[0];
       const bool twice = (heap_.size() > 1 && heap_[1] == top) || (heap_.size() > 2 && heap_[2] == top);
       if (!twice) return top;
       pop(), pop();
     }
-    return kNone;
+    return kEmpty;
   }
   // Removes and returns the pivot.
-  Index pop_pivot() {
-    const Index p = pivot();
-    if (p != kNone) pop();
+  std::uint64_t pop_pivot() {
+    const std::uint64_t p = pivot();
+    if (p != kEmpty) pop();
     return p;
   }
 
 private:
-  std::vector<Index> heap_;
+  std::vector<std::uint64_t> heap_;
   void pop() {
     std::pop_heap(heap_.begin(), heap_.end());
     heap_.pop_back();
@@ -116,8 +95,8 @@ struct Pairs {
 
 // Dimension 0: edges in filtration order join vertex components (elder
 // rule). Returns, by edge id, 1 for the edges that create a cycle instead.
-std::vector<char> vertex_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r,
-                               const std::vector<std::uint64_t>& edges, Pairs& pairs) {
+std::vector<char> vertex_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r, Pairs& pairs) {
+  const std::vector<std::uint64_t> edges = filtration_order(r.edge);
   ElderUnionFind vertices(t.num_points());
   auto vertex_key = [&](Index v) { return std::make_tuple(r.vertex[v], v); };
   std::vector<char> creates_cycle(edges.size(), 0);
@@ -139,91 +118,77 @@ std::vector<char> vertex_pairs(const Triangulation& t, const Simplices& s, const
 
 // Dimension 2: in reverse filtration order, each triangle joins the
 // complement components on its two sides (Alexander duality); node 0 is
-// the outside, never filled. Returns the positions of the triangles that
-// kill a 1-cycle instead. The sides are gathered by position first, walking
-// the triangles in id order (local), not in filtration order (random).
-RankedBits complement_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r,
-                            const std::vector<std::uint64_t>& triangles, const std::vector<Index>& position,
-                            Pairs& pairs) {
-  const std::size_t nf = triangles.size();
-  std::vector<std::array<Index, 2>> sides;
-  assign_huge(sides, nf);
-  for (Index f = 0; f < nf; ++f)
-    for (int i = 0; i < 2; ++i) {
-      const Index c = s.triangle_cells(f)[i];
-      sides[position[f]][i] = t.is_infinite(c) ? Index(0) : c + 1;
-    }
+// the outside, never filled. Returns the triangles that kill a 1-cycle
+// instead, in filtration order.
+std::vector<Index> complement_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r,
+                                    Pairs& pairs) {
+  const std::vector<std::uint64_t> triangles = filtration_order(r.triangle);
   ElderUnionFind complement(t.num_cells() + 1);
+  auto node = [&](Index c) { return t.is_infinite(c) ? Index(0) : c + 1; };
   // A complement component is born (in reverse) at its last-entering cell.
   auto cell_key = [&](Index n) { return n == 0 ? Key{kNever, 4, 0} : Key{r.cell[n - 1], 3, n - 1}; };
-  RankedBits kills(nf);
-  for (Index k = Index(nf); k-- > 0;) {
-    Index a = complement.find(sides[k][0]), b = complement.find(sides[k][1]);
+  // The complement is connected: every finite cell's node merges once.
+  std::vector<Index> killers;
+  reserve_huge(killers, triangles.size() - t.num_finite_cells());
+  for (Index k = Index(triangles.size()); k-- > 0;) {
+    const Index f = id_of(triangles[k]);
+    const auto cells = s.triangle_cells(f);
+    Index a = complement.find(node(cells[0])), b = complement.find(node(cells[1]));
     if (a == b) {
-      kills.set(k);
+      killers.push_back(f);
       continue;
     }
     if (cell_key(a) < cell_key(b)) std::swap(a, b);  // a: elder (enters later)
-    pairs.add({2, rank_of(triangles[k]), r.cell[b - 1], id_of(triangles[k]), b - 1});
+    pairs.add({2, rank_of(triangles[k]), r.cell[b - 1], f, b - 1});
     complement.merge(a, b);
   }
-  kills.index();
-  return kills;
+  std::reverse(killers.begin(), killers.end());
+  return killers;
 }
 
 // Dimension 1: reduces the boundaries of the cycle-killing triangles,
-// restricted to cycle-creating edges, in filtration order. Columns hold edge
-// positions and are found through their pivots. Most columns need no
-// addition and most reduced ones have at most three entries: a reduced
-// column stays in its triangle's boundary slot (kNone pads), and only a
-// longer one goes to `longer` (its length, then its entries), the slot then
-// holding kLonger and the offset. Marks the paired edges 2 in creates_cycle.
-void cycle_pairs(const Simplices& s, const std::vector<std::uint64_t>& edges,
-                 const std::vector<std::uint64_t>& triangles, std::vector<Index> position, const RankedBits& kills,
+// restricted to cycle-creating edges, in filtration order; an edge's key
+// (rank << 32 | id) is its place in the filtration order. Columns are found
+// through their pivots. Most columns need no addition and most reduced ones
+// have at most three entries: a reduced column stays in its triangle's
+// boundary slot (edge ids, kNone pads), and only a longer one goes to
+// `longer` (its length, then its entries), the slot then holding kLonger and
+// the offset. Marks the paired edges 2 in creates_cycle.
+void cycle_pairs(const Simplices& s, const FiltrationRanks& r, const std::vector<Index>& killers,
                  std::vector<char>& creates_cycle, Pairs& pairs) {
-  std::vector<Index> edge_position;
-  assign_huge(edge_position, edges.size());
-  for (Index k = 0; k < edges.size(); ++k) edge_position[id_of(edges[k])] = k;
-  // The boundaries, by killing triangle in filtration order.
   using Slot = std::array<Index, 3>;
   std::vector<Slot> slots;
-  assign_huge(slots, kills.count());
-  for (Index f = 0; f < triangles.size(); ++f) {
-    if (!kills.test(position[f])) continue;
-    Slot& b = slots[kills.rank(position[f])];
+  assign_huge(slots, killers.size());
+  for (std::size_t j = 0; j < killers.size(); ++j)
     for (int i = 0; i < 3; ++i) {
-      const Index e = s.triangle_edges(f)[i];
-      b[i] = creates_cycle[e] ? edge_position[e] : kNone;
+      const Index e = s.triangle_edges(killers[j])[i];
+      slots[j][i] = creates_cycle[e] ? e : kNone;
     }
-  }
-  // (Assigning {} would keep the capacity.)
-  position = std::vector<Index>();
-  edge_position = std::vector<Index>();
-  constexpr Index kLonger = kNone - 1;  // above any edge position
-  std::vector<Index> reduced_at;        // by pivot position: the slot
-  assign_huge(reduced_at, edges.size(), kNone);
+  auto key = [&](Index e) { return std::uint64_t(r.edge[e]) << 32 | e; };
+  constexpr Index kLonger = kNone - 1;  // not an edge id
+  std::vector<Index> reduced_at;        // by pivot edge: the slot
+  assign_huge(reduced_at, s.num_edges(), kNone);
   std::vector<Index> longer;
   auto column_of = [&](const Slot& b) {
     return b[0] == kLonger ? std::span<const Index>(longer.data() + b[1] + 1, longer[b[1]]) : std::span<const Index>(b);
   };
   HeapColumn column;
   std::vector<Index> reduced;
-  Index next = 0;  // the next killing triangle's slot
-  for (Index k = 0; k < triangles.size(); ++k) {
-    if (!kills.test(k)) continue;
-    Slot& b = slots[next++];
-    Index p = kNone;  // the largest entry
+  for (std::size_t j = 0; j < killers.size(); ++j) {
+    Slot& b = slots[j];
+    std::uint64_t p = HeapColumn::kEmpty;  // the largest entry's key
     for (const Index e : b)
-      if (e != kNone && (p == kNone || e > p)) p = e;
-    if (p != kNone && reduced_at[p] != kNone) {
+      if (e != kNone && (p == HeapColumn::kEmpty || key(e) > p)) p = key(e);
+    if (p != HeapColumn::kEmpty && reduced_at[Index(p)] != kNone) {
       column.clear();
       for (const Index e : b)
-        if (e != kNone) column.push(e);
-      for (; p != kNone && reduced_at[p] != kNone; p = column.pivot())
-        for (const Index e : column_of(slots[reduced_at[p]]))
-          if (e != kNone) column.push(e);
+        if (e != kNone) column.push(key(e));
+      for (; p != HeapColumn::kEmpty && reduced_at[Index(p)] != kNone; p = column.pivot())
+        for (const Index e : column_of(slots[reduced_at[Index(p)]]))
+          if (e != kNone) column.push(key(e));
       reduced.clear();
-      for (Index x = column.pop_pivot(); x != kNone; x = column.pop_pivot()) reduced.push_back(x);
+      for (std::uint64_t x = column.pop_pivot(); x != HeapColumn::kEmpty; x = column.pop_pivot())
+        reduced.push_back(Index(x));
       b.fill(kNone);
       if (reduced.size() <= b.size()) {
         std::copy(reduced.begin(), reduced.end(), b.begin());
@@ -234,24 +199,20 @@ void cycle_pairs(const Simplices& s, const std::vector<std::uint64_t>& edges,
         if (longer.size() >= kLonger) fail("persistence: too many reduced entries for 32-bit offsets", ErrorKind::LimitExceeded);
       }
     }
-    if (p == kNone) continue;  // cannot happen for a killing triangle
-    const std::uint64_t edge = edges[p];
-    pairs.add({1, rank_of(edge), rank_of(triangles[k]), id_of(edge), id_of(triangles[k])});
-    creates_cycle[id_of(edge)] = 2;
-    reduced_at[p] = next - 1;
+    if (p == HeapColumn::kEmpty) continue;  // cannot happen for a killing triangle
+    const Index edge = Index(p), f = killers[j];
+    pairs.add({1, r.edge[edge], r.triangle[f], edge, f});
+    creates_cycle[edge] = 2;
+    reduced_at[edge] = Index(j);
   }
 }
 
 void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r, Pairs& pairs) {
-  const std::vector<std::uint64_t> edges = filtration_order(r.edge);
-  std::vector<char> creates_cycle = vertex_pairs(t, s, r, edges, pairs);
-  const std::vector<std::uint64_t> triangles = filtration_order(r.triangle);
-  std::vector<Index> position;  // of each triangle in filtration order
-  assign_huge(position, triangles.size());
-  for (Index k = 0; k < triangles.size(); ++k) position[id_of(triangles[k])] = k;
-  const RankedBits kills = complement_pairs(t, s, r, triangles, position, pairs);
-  cycle_pairs(s, edges, triangles, std::move(position), kills, creates_cycle, pairs);
-  for (Index e = 0; e < edges.size(); ++e)
+  // One dimension at a time, each freeing its arrays before the next.
+  std::vector<char> creates_cycle = vertex_pairs(t, s, r, pairs);
+  const std::vector<Index> killers = complement_pairs(t, s, r, pairs);
+  cycle_pairs(s, r, killers, creates_cycle, pairs);
+  for (Index e = 0; e < s.num_edges(); ++e)
     if (creates_cycle[e] == 1) pairs.add({1, r.edge[e], kNever, e, kNone});
 }
 
