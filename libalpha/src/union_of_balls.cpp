@@ -9,7 +9,9 @@
 #include <string>
 
 #include "alpha/error.hpp"
+#include "ball_in_polyhedron.hpp"
 #include "compensated_sum.hpp"
+#include "convex_polyhedron.hpp"
 
 namespace alpha {
 namespace {
@@ -212,13 +214,6 @@ SimplexTerms<4> tetrahedron_terms(const std::array<Ball, 4>& b, const std::array
   return t;
 }
 
-// Dihedral angle of tetrahedron (a, b, c, d) at edge ab.
-double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Vec3 e = b - a;
-  const Vec3 n1 = cross(e, c - a), n2 = cross(e, d - a);
-  return std::atan2(norm(cross(n1, n2)), dot(n1, n2));
-}
-
 }  // namespace
 
 void add_far_points(std::vector<Vec3>& points, std::vector<double>& weights) {
@@ -249,12 +244,32 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
   const Triangulation& t = complex.triangulation();
   const Simplices& s = complex.simplices();
   const std::size_t n = t.num_points();
-  std::vector<double> radius(n, 0.0);
+  radius_.assign(n, 0.0);
   for (Index i = 0; i < n; ++i) {
     const double w = t.weight(i);
     if (!(w >= 0)) fail("union of balls: point " + std::to_string(i) + " has negative weight " + std::to_string(w));
-    radius[i] = std::sqrt(w);
+    radius_[i] = std::sqrt(w);
+    max_radius_ = std::max(max_radius_, radius_[i]);
   }
+  const std::vector<double>& radius = radius_;
+  // For cell_cover: the balls of K, and each one's neighbours in K.
+  balls_ = PointGrid(2 * max_radius_);
+  for (Index i = 0; i < n; ++i)
+    if (radius_[i] > 0 && in_dual_complex_vertex(i)) balls_.add(t.point(i), i);
+  balls_.finish();
+  neighbour_start_.assign(n + 1, 0);
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (in_dual_complex_edge(e))
+      for (Index x : s.edge(e)) ++neighbour_start_[x + 1];
+  for (Index i = 0; i < n; ++i) neighbour_start_[i + 1] += neighbour_start_[i];
+  neighbours_.resize(neighbour_start_[n]);
+  std::vector<Index> next(neighbour_start_.begin(), neighbour_start_.end() - 1);
+  for (Index e = 0; e < s.num_edges(); ++e)
+    if (in_dual_complex_edge(e)) {
+      const auto& ev = s.edge(e);
+      neighbours_[next[ev[0]]++] = ev[1];
+      neighbours_[next[ev[1]]++] = ev[0];
+    }
   // The balls of a simplex relative to its first vertex.
   auto balls = [&]<std::size_t N>(const std::array<Index, N>& v, std::array<Ball, N>& b) {
     for (std::size_t k = 0; k < N; ++k) b[k] = {t.point(v[k]) - t.point(v[0]), t.weight(v[k]), radius[v[k]]};
@@ -270,9 +285,6 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
   // Per ball: the area of its sphere on the boundary; per edge: the area of
   // its power facet inside the balls. Both by inclusion-exclusion over K.
   std::vector<Sum> area(n), facet(s.num_edges());
-  edge_term_.assign(s.num_edges(), {});
-  triangle_term_.assign(s.num_triangles(), {});
-  cell_term_.assign(t.num_cells(), {});
 
   for (Index v = 0; v < n; ++v)
     if (in_dual_complex_vertex(v)) area[v].add(4 * kPi * t.weight(v));
@@ -294,7 +306,6 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     kept[e] = 1;
     for (int k = 0; k < 2; ++k) area[s.edge(e)[k]].add(-lens.area[k]);
     facet[e].add(lens.face[0]);
-    edge_term_[e] = {lens.volume, lens.area};
   }
   std::vector<std::array<double, 3>> corner(s.num_triangles());  // by triangle(f) order
   for (Index f = 0; f < s.num_triangles(); ++f) {
@@ -307,7 +318,6 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     for (int k = 0; k < 3; ++k) area[v[k]].add(tt.area[k]);
     for (int e = 0; e < 3; ++e) facet[edge_among(fe, v[kTriangleEdge[e][0]], v[kTriangleEdge[e][1]])].add(-tt.face[e]);
     corner[f] = tt.corner;
-    triangle_term_[f] = {tt.volume, tt.area};
   }
   for (Index c = 0; c < t.num_cells(); ++c) {
     std::array<Ball, 4> b;
@@ -329,7 +339,6 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     const SimplexTerms<4> tt = tetrahedron_terms(b, cell_corner);
     for (int k = 0; k < 4; ++k) area[v[k]].add(-tt.area[k]);
     for (int e = 0; e < 6; ++e) facet[ce[e]].add(tt.face[e]);
-    cell_term_[c] = {tt.volume, tt.area};
   }
 
   // Per ball volume (r_i A_i + sum_j h_ij F_ij) / 3: the divergence theorem
@@ -367,41 +376,70 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
 
 CellCover UnionOfBalls::cell_cover(Index c) const {
   const Triangulation& t = complex_->triangulation();
-  const Simplices& s = complex_->simplices();
   if (t.is_infinite(c)) return {};
   const auto& v = t.cell(c).v;
   std::array<Vec3, 4> p;
   for (int k = 0; k < 4; ++k) p[k] = t.point(v[k]);
-  Sum volume, area;
-  // A term of a simplex, times the cell's fraction.
-  auto add = [&]<std::size_t N>(const Term<N>& term, double fraction) {
-    volume.add(fraction * term.volume);
-    for (std::size_t k = 0; k < N; ++k) area.add(fraction * term.area[k]);
+  // A flat cell holds nothing measurable (and has no outward sides).
+  double longest = 0;
+  for (const auto& [x, y] : kEdge) longest = std::max(longest, norm(p[y] - p[x]));
+  if (std::fabs(dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0]))) <= 1e-12 * longest * longest * longest) return {};
+  const Vec3 center = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+  double reach = 0;
+  for (const Vec3& x : p) reach = std::max(reach, norm(x - center));
+  std::array<Vec3, 4> inward;  // unit normal of the face opposite k, towards k
+  for (int k = 0; k < 4; ++k) {
+    const Vec3& a = p[(k + 1) % 4];
+    Vec3 n = cross(p[(k + 2) % 4] - a, p[(k + 3) % 4] - a);
+    if (dot(n, p[k] - a) < 0) n = -1.0 * n;
+    inward[k] = (1 / norm(n)) * n;
+  }
+  // Whether the ball (x, r) misses the cell: it lies beyond its bounding
+  // sphere or one of its faces' planes (a few balls that miss pass).
+  auto beyond = [&](const Vec3& x, double r) {
+    if (norm(x - center) >= reach + r) return true;
+    for (int k = 0; k < 4; ++k)
+      if (dot(inward[k], x - p[(k + 1) % 4]) <= -r) return true;
+    return false;
   };
-  for (int k = 0; k < 4; ++k) {
-    if (!in_dual_complex_vertex(v[k])) continue;
-    const double w = t.weight(v[k]);
-    const Term<1> ball{4 * kPi / 3 * w * std::sqrt(w), {4 * kPi * w}};
-    add(ball, solid_angle(p[k], p[(k + 1) % 4], p[(k + 2) % 4], p[(k + 3) % 4]) / (4 * kPi));
+  std::vector<Index> near;  // the balls that reach the cell
+  balls_.visit(center, reach + max_radius_, [&](Index i) {
+    if (!beyond(t.point(i), radius_[i])) near.push_back(i);
+  });
+  std::sort(near.begin(), near.end());
+  Sum volume, area;
+  ConvexPolyhedron part(p[0], p[1], p[2], p[3]);
+  std::vector<std::pair<Vec3, double>> cuts;  // the planes of P_i
+  for (Index i : near) {
+    // The cell's part of the power cell of i, about i's centre: B_i & P_i
+    // is B_i cut by the half-spaces of i's neighbours in K, and in the cell
+    // only those of neighbours reaching it cut (a point of B_i where j has
+    // the smaller power is in B_j).
+    const Vec3& q = t.point(i);
+    cuts.clear();
+    bool missed = false;  // by P_i: the cell lies beyond one of its planes
+    for (Index k = neighbour_start_[i]; k < neighbour_start_[i + 1] && !missed; ++k) {
+      const Index j = neighbours_[k];
+      if (!std::binary_search(near.begin(), near.end(), j)) continue;
+      const Vec3 d = t.point(j) - q;
+      const double offset = dot(d, d) + t.weight(i) - t.weight(j);
+      missed = std::all_of(p.begin(), p.end(), [&](const Vec3& x) { return 2 * dot(d, x - q) > offset; });
+      cuts.push_back({2.0 * d, offset});
+    }
+    if (missed) continue;
+    part.reset(p[0] - q, p[1] - q, p[2] - q, p[3] - q);
+    for (std::size_t k = 0; k < cuts.size() && !part.empty(); ++k) part.clip(cuts[k].first, cuts[k].second);
+    if (part.empty()) continue;
+    const BallPart x = ball_in_polyhedron(part, radius_[i]);
+    volume.add(x.volume);
+    area.add(x.area);
   }
-  for (int e = 0; e < 6; ++e) {
-    const int x = kEdge[e][0], y = kEdge[e][1];
-    const Index id = s.find_edge(v[x], v[y]);
-    const Term<2>& lens = edge_term_[id];
-    if (lens.volume == 0 && lens.area[0] == 0 && lens.area[1] == 0) continue;
-    add(lens, -dihedral_angle(p[x], p[y], p[kEdgeOthers[e][0]], p[kEdgeOthers[e][1]]) / (2 * kPi));
-  }
-  for (int k = 0; k < 4; ++k) {
-    const Index f = s.cell_triangle(c, k);
-    add(triangle_term_[f], 0.5);
-  }
-  add(cell_term_[c], -1.0);
   return {volume.value(), area.value()};
 }
 
 std::size_t UnionOfBalls::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(ball_area_) + bytes(ball_volume_) + bytes(edge_term_) + bytes(triangle_term_) + bytes(cell_term_);
+  return bytes(ball_area_) + bytes(ball_volume_) + bytes(radius_) + bytes(neighbour_start_) + bytes(neighbours_);
 }
 
 }  // namespace alpha

@@ -280,8 +280,7 @@ private:
                              const NearestTriangle& mouths) const {
     double sa_volume = 0;
     for (Index c : cells) sa_volume += space[c].sa_empty;
-    // Fractional shares are exact only in sum: keep the sums, not below 0.
-    sa_volume = std::max(0.0, sa_volume);
+    sa_volume = std::max(0.0, sa_volume);  // rounding
     if (sa_volume >= options_.min_volume) return build(cells, space, mouths, sa_volume);
     return std::nullopt;
   }
@@ -316,7 +315,7 @@ private:
       weighted = weighted + weight * m.centroid;
       total_weight += weight;
     }
-    cav.sa_area = std::max(0.0, cav.sa_area);  // a sum of fractional shares, as sa_volume
+    cav.sa_area = std::max(0.0, cav.sa_area);  // rounding, as sa_volume
     cav.ms_volume = std::max(cav.sa_volume, cav.sa_volume + layer.volume);
     cav.ms_area = std::max(0.0, layer.area);
     cav.center = total_weight > 0

@@ -8,9 +8,7 @@
 
 namespace molecule {
 
-// A cell's shares are fractional (see CavitySpace::cell): they can be
-// slightly negative in a thin cell, and only sums over many cells are
-// meaningful.
+// A cell's measures (see CavitySpace::cell).
 struct CellSpace {
   double volume = 0;    // of the tetrahedron, A^3
   double sa_empty = 0;  // the part not covered by the inflated balls, A^3
@@ -23,9 +21,8 @@ public:
   // `ac`: the complex of the probe-inflated balls (weights = squared radii).
   explicit CavitySpace(const alpha::AlphaComplex& ac);
 
-  // The union's share of the cell by fractional inclusion-exclusion
-  // (alpha::UnionOfBalls): exact for the cell when the balls' pieces stay
-  // in it, exact in sum over all cells.
+  // The cell's part of the inflated balls' union (alpha::UnionOfBalls::
+  // cell_cover): exact per cell, so exact over any set of cells.
   CellSpace cell(alpha::Index c) const;
 
   // Area of a triangle not covered by the discs its three inflated balls

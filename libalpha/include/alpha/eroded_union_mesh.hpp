@@ -24,9 +24,9 @@
 // them; it is capped flat where the cells end in free space (a pocket's
 // mouths). Its volume approaches the cells' layer shares plus their free
 // space (a cavity's ms_volume): the layer shares are of the same regions
-// of space; the free space's, fractional (alpha/union_of_balls.hpp), are
-// exact in sum only over regions closed by triangles of the dual complex
-// (a void), elsewhere up to the ball sectors crossing the cells' faces. Its vertices on the molecular surface are found as the
+// of space, and the free space is the cells less the union's part in each
+// (UnionOfBalls::cell_cover, exact per cell). Its vertices on the
+// molecular surface are found as the
 // surface's are (Newton's method on the distance); the others (mouths,
 // where another cell's share begins) by bisection on that membership, to
 // 1e-4 of the spacing.

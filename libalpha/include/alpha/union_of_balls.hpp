@@ -23,24 +23,16 @@
 // shoelace formula for planar patches, with all vectors taken relative to a
 // vertex of the simplex (translation does not cost digits).
 //
-// Per cell T of the triangulation the union is split fractionally (Liang et
-// al. 1998, "II. Inaccessible cavities"): a vertex's ball term times the
-// solid angle of T at the vertex / 4 pi, an edge's lens term times the
-// dihedral angle of T at the edge / 2 pi (the lens is symmetric about the
-// edge's line), half of a triangle's term (symmetric about its plane), and
-// T's own term if T is in K. The shares of all cells around an interior
-// vertex or edge sum to 1, so:
-//  - the shares of all cells sum to the whole union when no ball of K
-//    reaches outside the convex hull;
-//  - over a void (cells not in K joined through triangles not in K, closed
-//    by triangles of K) the shares sum to the union's volume (area) inside
-//    the void, so its empty volume is never negative;
-//  - a single cell's share is its covered part when each piece stays
-//    inside it (no ball crossing the facet opposite its center, ...). Not
-//    in general: in a flat cell whose apex lies near the opposite facet, the
-//    apex ball's sector (solid angle near 2 pi) reaches into the next cell,
-//    and the share can exceed the cell's volume.
-//
+// Per cell T of the triangulation the union's part is exact: it is the
+// union of the B_i & P_i & T (the restricted power cells partition it), and
+// B_i & P_i is B_i cut by the half-spaces of i's neighbours in K (a facet of
+// P_i that cuts B_i joins i to a ball it meets there: an edge of K). Each
+// B_i & P_i & T is a ball inside a convex polyhedron, measured in closed
+// form (ball_in_polyhedron.hpp). Only the balls reaching T count; a flat
+// cell covers nothing. Cells tile space, so the cells' parts sum to the
+// whole union when it lies inside the convex hull, and the parts of any
+// set of cells (a pocket, open or not) are the union's volume and area
+// inside it.
 // Precision: double arithmetic, not exact (unlike K itself, which is exact).
 // Each term has a relative error of a few ulps away from tangencies. Where
 // two balls barely touch (circle radius a below 10^-5.5 r), the angles of
@@ -61,10 +53,11 @@
 #include <vector>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/point_grid.hpp"
 
 namespace alpha {
 
-// The union's share of one cell of the triangulation (see above).
+// The union's part of one cell of the triangulation (see above).
 struct CellCover {
   double volume = 0;  // volume of the cell covered by the union
   double area = 0;    // area of the union's boundary inside the cell
@@ -97,8 +90,8 @@ public:
   std::span<const double> ball_areas() const { return ball_area_; }
   std::span<const double> ball_volumes() const { return ball_volume_; }
 
-  // The union's share of finite cell c by fractional inclusion-exclusion;
-  // zero for an infinite cell.
+  // The union's part of finite cell c (see above); zero for an infinite
+  // cell.
   CellCover cell_cover(Index c) const;
 
   // Whether a simplex is in the dual complex K (alpha complex at 0).
@@ -110,20 +103,14 @@ public:
   std::size_t memory_bytes() const;
 
 private:
-  // Volume of the intersection of the balls of one simplex of K, and per
-  // ball the area of its sphere inside the others (0 for simplices not in K).
-  template <std::size_t N>
-  struct Term {
-    double volume = 0;
-    std::array<double, N> area{};
-  };
   const AlphaComplex* complex_;
   Index level_;  // simplices with entry rank below it are in K
   double area_ = 0, volume_ = 0;
   std::vector<double> ball_area_, ball_volume_;
-  std::vector<Term<2>> edge_term_;
-  std::vector<Term<3>> triangle_term_;
-  std::vector<Term<4>> cell_term_;
+  std::vector<double> radius_;
+  double max_radius_ = 0;
+  PointGrid balls_;                                   // the balls of K
+  std::vector<Index> neighbour_start_, neighbours_;  // per ball, its neighbours in K
 };
 
 }  // namespace alpha

@@ -72,9 +72,8 @@ struct Cavity {
   std::vector<alpha::Index> cells;  // empty tetrahedra (triangulation cell ids), sorted
   std::vector<Mouth> mouths;        // empty for a void; outside mouths first
   // Empty space of the cells not covered by the probe-inflated balls (the
-  // space the probe's centre can reach), A^3, from the per-cell fractional
-  // inclusion-exclusion of alpha::UnionOfBalls (exact in sum; per cell
-  // exact when no ball piece crosses the cell's facets).
+  // space the probe's centre can reach), A^3: the cells less the union's
+  // part in each (alpha::UnionOfBalls::cell_cover, exact per cell).
   double sa_volume = 0;
   double sa_area = 0;  // area of the probe-inflated spheres lining the cavity, A^2 (same split)
   // The same bounded by the molecular (solvent-excluded) surface instead of

@@ -11,10 +11,9 @@
 //   casts     per pocket and void, the space it holds as the molecular
 //             surface bounds it (alpha::cells_mesh of its cells), capped
 //             flat at its mouths, in its colour, every vertex's site its
-//             rank by colour. Its volume approaches a void's ms_volume;
-//             a pocket's up to the free space's fractional split at its
-//             mouths (README, Meshes: sa_volume's shares are exact only
-//             over regions closed by the dual complex).
+//             rank by colour. Its volume approaches its cavity's
+//             ms_volume (up to the lattice's error: both split space by
+//             the same regions).
 //
 // Triangle size is set by `resolution`, the surface's lattice spacing in A
 // (the casts' is finer: cast_spacing).
