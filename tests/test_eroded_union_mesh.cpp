@@ -106,9 +106,11 @@ TEST_CASE("surface mesh: real proteins within 1% of the analytic molecular volum
 
 TEST_CASE("cast mesh: real proteins' casts are closed and within 2% of ms_volume", "[surface_mesh]") {
   // A cast's volume is its cavity's ms_volume up to the lattice's error
-  // (README, Meshes; both split space by the same regions): every void
-  // and pocket of these four proteins within 1.5% from 10 A^3 up (-1.23%
-  // at worst), 2% below (1UYD's 5.6 A^3 pocket: -1.75%).
+  // (README, Meshes; both split space by the same regions): every void of
+  // these four proteins within 1% (its chords offset, a void's error is a
+  // few tenths of a percent), every pocket within 1.5% from 10 A^3 up
+  // (-1.17% at worst: the corners cut at its mouths), 2% below (1UYD's
+  // 5.6 A^3 pocket: -1.74%).
   std::size_t asserted = 0;
   for (const char* name : {"1fbl.pdb", "1UYD.pdb", "3stdA.pdb", "1fkgA.pdb"}) {
     const molecule::Structure st = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/" + name);
@@ -124,7 +126,7 @@ TEST_CASE("cast mesh: real proteins' casts are closed and within 2% of ms_volume
                 << report.summary());
       CHECK(report.closed_manifold());
       CHECK(testing::intersecting_pairs(m) == 0);
-      CHECK(report.volume == Approx(c.ms_volume).epsilon(c.ms_volume >= 10 ? 0.015 : 0.02));
+      CHECK(report.volume == Approx(c.ms_volume).epsilon(is_void ? 0.01 : c.ms_volume >= 10 ? 0.015 : 0.02));
       ++asserted;
     };
     for (std::size_t i = 0; i < search.cavities.pockets.size(); ++i) check(search.cavities.pockets[i], false, i + 1);

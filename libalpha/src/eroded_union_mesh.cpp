@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "alpha/error.hpp"
+#include "chord_offset.hpp"
 #include "alpha/nearest_ball.hpp"
 
 namespace alpha {
@@ -330,7 +331,8 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
     if (near.nearest(hoods.center(first), r + hoods.half_diagonal()).on == Nearest::On::far) return;  // in the body
     for (std::size_t n : nodes) inside[n] = held(near, lattice.node(n));
   });
-  return contour(lattice, inside, [&](std::size_t a, std::size_t b, std::size_t cube) {
+  std::vector<Vec3> normals;  // per point: the molecular surface's there, zero elsewhere
+  SurfaceMesh mesh = contour(lattice, inside, [&](std::size_t a, std::size_t b, std::size_t cube) {
     const Nearby& near = hoods.of_cube(cube);
     const Vec3 pa = lattice.node(a), pb = lattice.node(b);
     // Most crossings are on the molecular surface, b in the body: found by
@@ -338,17 +340,23 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
     // point just before it is held (else the cast ends earlier: at a
     // mouth, or where another cell's share begins).
     if (near.nearest(pb, r).on == Nearest::On::far) {
-      const Vec3 p = crossing(near, pb, pa, r, hoods.limit()).first;
+      const auto [p, n] = crossing(near, pb, pa, r, hoods.limit());
       const double t = dot(p - pa, pb - pa) / dot(pb - pa, pb - pa);
-      if (held(near, along(pa, pb, t - kRootPrecision))) return p;
+      if (held(near, along(pa, pb, t - kRootPrecision))) {
+        normals.push_back((1 / norm(p - n.point)) * (p - n.point));  // away from F: into the body
+        return p;
+      }
     }
     double ta = 0, tb = 1;  // held at ta, not at tb
     while (tb - ta > kRootPrecision) {
       const double mid = (ta + tb) / 2;
       (held(near, along(pa, pb, mid)) ? ta : tb) = mid;
     }
+    normals.push_back({});
     return along(pa, pb, (ta + tb) / 2);
   });
+  offset_chords(mesh, normals);
+  return mesh;
 }
 
 }  // namespace alpha
