@@ -151,6 +151,15 @@ TEST_CASE("eroded union: a patch's area in a cell's cone, against its sphere's a
     INFO("ball " << i);
     CHECK(sum[i] == Approx(u.ball_area(i)).epsilon(1e-11).margin(1e-11 * balls.radii[i] * balls.radii[i]));
   }
+  // The circles left out by their union arcs (kept when r > 0) bound no
+  // part: the same areas, bit for bit, as with every circle clipped (r = 0
+  // keeps no arcs).
+  const ErodedUnion uneroded(*u.u, 0.0);
+  for (Index c = 0; c < t.num_cells(); ++c)
+    for (int k = 0; k < 4; ++k) {
+      INFO("cell " << c << " vertex " << k);
+      CHECK(e.patch_area(c, k) == uneroded.patch_area(c, k));
+    }
   // Per cone: directions n in it (a nonnegative combination of the edges,
   // by Cramer's rule) whose point p + R n is in no other ball.
   std::mt19937_64 rng(7);

@@ -29,8 +29,11 @@ double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
 // their left: an arc from a to b about the circle's centre c adds the loop
 // (m, a, the arc, b), i.e. the geodesic triangle (m, a, b) plus the cap's
 // sector from c less the triangle (c, a, b). Arcs are cut to quarter
-// turns, so that no triangle has two opposite corners.
-double sphere_part_area(std::span<const std::pair<Vec3, double>> halfspaces, const Vec3& m) {
+// turns, so that no triangle has two opposite corners. bounds[k]: whether
+// circle k can bound the part (one known to hold none of its boundary is
+// not clipped: its arcs would all be cut away).
+double sphere_part_area(std::span<const std::pair<Vec3, double>> halfspaces, std::span<const char> bounds,
+                        const Vec3& m) {
   Sum area;
   std::vector<Arc> set, scratch;
   for (std::size_t k = 0; k < halfspaces.size(); ++k) {
@@ -38,6 +41,7 @@ double sphere_part_area(std::span<const std::pair<Vec3, double>> halfspaces, con
     const double length = norm(g);
     if (h >= length) continue;  // the whole sphere: no circle
     if (h <= -length) return 0;
+    if (!bounds[k]) continue;
     // The part's side of the circle is the cap c.n >= cos_radius about
     // c = -g / |g|; the arcs go round c counterclockwise (turn 1). The cap
     // of the opposite centre (turn -1) when that is the smaller.
@@ -92,7 +96,29 @@ double ErodedUnion::patch_area(Index c, int k) const {
   Vec3 m = cross(u[1] - u[0], u[2] - u[0]);
   m = (dot(m, u[0]) < 0 ? -1 / norm(m) : 1 / norm(m)) * m;
   const double cos_cone = dot(m, u[0]), sin_cone = std::sqrt((1 - cos_cone) * (1 + cos_cone));
+  // Whether the directions within acos(cos_a) of v / |v| all lie outside
+  // that reach of m (by a margin far above rounding).
+  const auto apart = [&](const Vec3& v, double length, double cos_a) {
+    const double sin_a = std::sqrt((1 - cos_a) * (1 + cos_a));
+    const double cos_reach = cos_a * cos_cone - sin_a * sin_cone;  // cos(a + cone), when both sum below pi
+    return cos_a + cos_cone > 0 && dot(v, m) < length * (cos_reach - 1e-9);
+  };
+  // Whether the circle of edge e can bound the patch in the cone: not when
+  // the union's arcs on it (kept when r > 0) are none, or all outside the
+  // cone's reach (their bounding ball's points on the sphere lie within
+  // acos(cos_b) of its centre's direction).
+  const auto can_bound = [&](Index e) {
+    if (r_ == 0) return true;
+    if (arc_start_[e] == arc_start_[e + 1]) return false;
+    const auto& [centre, b] = arc_bounds_[arc_start_[e]];
+    const Vec3 d = centre - pi;
+    const double length = norm(d);
+    if (!(length > 0)) return true;
+    const double cos_b = (wi + length * length - b * b) / (2 * radius * length);
+    return cos_b <= -1 || !apart(d, length, std::min(cos_b, 1.0));
+  };
   std::vector<std::pair<Vec3, double>> halfspaces;
+  std::vector<char> bounds(3, 1);
   for (int n = 0; n < 3; ++n) {
     Vec3 inward = cross(u[(n + 1) % 3], u[(n + 2) % 3]);  // towards u[n]
     if (dot(inward, u[n]) < 0) inward = -1.0 * inward;
@@ -100,20 +126,17 @@ double ErodedUnion::patch_area(Index c, int k) const {
   }
   // The patch: p_i + R n outside each neighbour's ball, of those whose
   // cap on the sphere (directions within acos(h / |g|) of g) comes within
-  // the cone's reach of m (the others cover none of it; by a margin far
-  // above rounding).
+  // the cone's reach of m (the others cover none of it).
   for (Index e : s.vertex_edges(i)) {
     const Index j = s.edge(e)[0] == i ? s.edge(e)[1] : s.edge(e)[0];
     const Vec3 d = t.point(j) - pi;
     const Vec3 g = 2 * radius * d;
     const double h = wi + dot(d, d) - t.weight(j), length = norm(g);
-    if (h >= length) continue;
-    const double cos_cap = std::max(h / length, -1.0), sin_cap = std::sqrt((1 - cos_cap) * (1 + cos_cap));
-    const double cos_reach = cos_cap * cos_cone - sin_cap * sin_cone;  // cos(cap + cone), when both sum below pi
-    const bool apart = cos_cap + cos_cone > 0 && dot(g, m) < length * (cos_reach - 1e-9);
-    if (!apart) halfspaces.push_back({g, h});
+    if (h >= length || apart(g, length, std::max(h / length, -1.0))) continue;
+    halfspaces.push_back({g, h});
+    bounds.push_back(can_bound(e));
   }
-  return wi * sphere_part_area(halfspaces, m);
+  return wi * sphere_part_area(halfspaces, bounds, m);
 }
 
 }  // namespace alpha
