@@ -33,3 +33,23 @@ TEST_CASE("radix_sort is a stable sort by key", "[radix]") {
       CHECK(items == expected);
     }
 }
+
+TEST_CASE("radix_sort_in_place sorts by key, then by the tie order", "[radix]") {
+  std::mt19937_64 rng(92);
+  // Sizes around the cutoff to the small sort and above; keys with many
+  // ties (down to equal keys, ordered by the tie order), with high bytes
+  // all equal (skipped), and spread over the whole range.
+  for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(129), std::size_t(5000), std::size_t(70000)})
+    for (const std::uint64_t mask : {std::uint64_t(7), std::uint64_t(0xFFFFFF), ~std::uint64_t(0)}) {
+      INFO("n " << n << ", mask " << mask);
+      std::vector<std::pair<std::uint64_t, std::size_t>> items(n);  // (key, tie order)
+      for (std::size_t i = 0; i < n; ++i) items[i] = {rng() & mask, i};
+      std::shuffle(items.begin(), items.end(), rng);
+      auto expected = items;
+      std::sort(expected.begin(), expected.end());
+      alpha::radix_sort_in_place(
+          items, [](const auto& item) { return item.first; },
+          [](const auto& a, const auto& b) { return a.second < b.second; });
+      CHECK(items == expected);
+    }
+}

@@ -125,14 +125,28 @@ void AlphaComplex::rank_critical() {
   // unattached faces (an attached face enters with a coface, and mu_low,
   // mu_high are entries of cofaces). Sorted by the lower ends of their
   // error intervals (in global id order among equal ones), then exactly
-  // within each run of overlapping intervals; the error is kept as a float
-  // rounded up. By lower ends, not values: then no later interval can
-  // reach back into a run already closed (one with a large error could,
-  // sorted by value).
+  // within each run of overlapping intervals. By lower ends, not values:
+  // then no later interval can reach back into a run already closed (one
+  // with a large error could, sorted by value). An interval is kept as its
+  // lower end, ordered as an unsigned integer (the sort's key, read in
+  // place), and its width as a float rounded up.
   struct Critical {
-    double value;
-    float error;
+    std::uint64_t low;
+    float width;
     Index id;  // global
+  };
+  // Doubles ordered as unsigned integers: flip all bits of negatives, the
+  // sign bit of the others.
+  const auto ordered = [](double x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    return bits ^ (bits >> 63 ? ~std::uint64_t(0) : std::uint64_t(1) << 63);
+  };
+  const auto low = [](const Critical& c) {
+    return std::bit_cast<double>(c.low >> 63 ? c.low ^ std::uint64_t(1) << 63 : ~c.low);
+  };
+  const auto high = [&](const Critical& c) {
+    const double x = low(c) + double(c.width);
+    return std::isnan(x) ? HUGE_VAL : x;
   };
   std::vector<Critical> order;
   reserve_huge(order, t.num_finite_cells() + t.num_vertices() +
@@ -150,7 +164,16 @@ void AlphaComplex::rank_critical() {
     }
     float error = float(z.error);
     if (double(error) < z.error) error = std::nextafter(error, HUGE_VALF);
-    order.push_back({z.value + 0.0, error, g});  // + 0.0: -0 sorts as 0
+    // The ends; an unbounded error (inf - inf) reaches everywhere.
+    double lo = z.value - double(error), hi = z.value + double(error);
+    lo = std::isnan(lo) ? -HUGE_VAL : lo + 0.0;  // + 0.0: -0 sorts as 0
+    hi = std::isnan(hi) ? HUGE_VAL : hi;
+    float width = HUGE_VALF;
+    if (std::isfinite(lo) && std::isfinite(hi)) {
+      width = float(hi - lo);
+      while (lo + double(width) < hi) width = std::nextafter(width, HUGE_VALF);
+    }
+    order.push_back({ordered(lo), width, g});
   };
   for (Index v = 0; v < t.num_points(); ++v)
     if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add(v);
@@ -160,21 +183,8 @@ void AlphaComplex::rank_critical() {
     if (!triangle_attached_[f]) add(ids_.triangles + f);
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) add(ids_.cells + c);
-  // The interval's ends; an unbounded error (inf - inf) reaches everywhere.
-  const auto low = [](const Critical& c) {
-    const double x = c.value - double(c.error);
-    return std::isnan(x) ? -HUGE_VAL : x;
-  };
-  const auto high = [](const Critical& c) {
-    const double x = c.value + double(c.error);
-    return std::isnan(x) ? HUGE_VAL : x;
-  };
-  // Doubles ordered as unsigned integers: flip all bits of negatives, the
-  // sign bit of the others.
-  radix_sort(order, [&](const Critical& c) {
-    const auto bits = std::bit_cast<std::uint64_t>(low(c) + 0.0);  // + 0.0: -0 sorts as 0
-    return bits ^ (bits >> 63 ? ~std::uint64_t(0) : std::uint64_t(1) << 63);
-  });
+  radix_sort_in_place(order, [](const Critical& c) { return c.low; },
+                      [](const Critical& a, const Critical& b) { return a.id < b.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).
   assign_huge(ranks_.vertex, t.num_points(), kNever);
   assign_huge(ranks_.edge, s.num_edges(), kNever);
