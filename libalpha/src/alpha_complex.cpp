@@ -183,7 +183,7 @@ void AlphaComplex::rank_critical() {
     if (!triangle_attached_[f]) add(ids_.triangles + f);
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) add(ids_.cells + c);
-  radix_sort_in_place(order, [](const Critical& c) { return c.low; },
+  radix_sort_in_place(std::span(order), [](const Critical& c) { return c.low; },
                       [](const Critical& a, const Critical& b) { return a.id < b.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).
   assign_huge(ranks_.vertex, t.num_points(), kNever);
@@ -267,7 +267,7 @@ void AlphaComplex::rank_critical() {
     }
     b = e;
   }
-  order = std::vector<Critical>();  // (= {} would keep the capacity)
+  release(order);
   spectrum_.shrink_to_fit();
 
   size_stats_ = sizes.stats();

@@ -37,4 +37,10 @@ void assign_huge(std::vector<T>& v, std::size_t n, const T& value = T()) {
   v.assign(n, value);
 }
 
+// Frees v's storage (v = {} would keep it: that assigns an empty list).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
 }  // namespace alpha

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -107,7 +108,7 @@ void sort_from_byte(T* first, T* last, const KeyOf& key, const TieLess& tie_less
 // Sorts items by key(item) (a std::uint64_t), equal keys by tie_less, in
 // place; a total order gives a deterministic result (the sort is not stable).
 template <class T, class KeyOf, class TieLess>
-void radix_sort_in_place(std::vector<T>& items, KeyOf key, TieLess tie_less) {
+void radix_sort_in_place(std::span<T> items, KeyOf key, TieLess tie_less) {
   if (items.empty()) return;
   // Start at the highest byte in which keys differ.
   std::uint64_t any = 0, all = ~std::uint64_t(0);

@@ -81,7 +81,7 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
       num_hull_triangles_ += inf >= 0 || t.is_infinite(n);
     }
   }
-  cell_edges = std::vector<std::array<Index, 6>>();  // (= {} would keep the capacity)
+  release(cell_edges);
   // Each vertex's edges, as compressed rows (32-bit offsets).
   if (2 * edges_.size() >= kNone) fail("too many edges for 32-bit incidence offsets", ErrorKind::LimitExceeded);
   assign_huge(vertex_edge_start_, np + 1, Index(0));
