@@ -184,7 +184,7 @@ void AlphaComplex::rank_critical() {
   for (Index c = 0; c < t.num_cells(); ++c)
     if (!t.is_infinite(c)) add(ids_.cells + c);
   radix_sort_in_place(std::span(order), [](const Critical& c) { return c.low; },
-                      [](const Critical& a, const Critical& b) { return a.id < b.id; });
+                      [](const Critical& c) { return c.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).
   assign_huge(ranks_.vertex, t.num_points(), kNever);
   assign_huge(ranks_.edge, s.num_edges(), kNever);

@@ -40,7 +40,7 @@ std::vector<std::uint64_t> filtration_order(const std::vector<Index>& rank) {
   std::vector<std::uint64_t> keyed;
   reserve_huge(keyed, rank.size());
   for (Index i = 0; i < rank.size(); ++i) keyed.push_back(std::uint64_t(rank[i]) << 32 | i);
-  radix_sort(keyed, [](std::uint64_t k) { return std::uint32_t(k >> 32); });  // stable: ids stay increasing
+  radix_sort(std::span(keyed), [](std::uint64_t k) { return std::uint32_t(k >> 32); });  // stable: ids stay increasing
   return keyed;
 }
 Index id_of(std::uint64_t keyed) { return Index(keyed); }
@@ -236,16 +236,17 @@ std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Sim
   std::vector<PersistencePair> list;
   reserve_huge(list, pairs.simplices[0].size() + pairs.simplices[1].size() + pairs.simplices[2].size());
   // By (dim, birth, death, birth_simplex), a total order (a simplex creates
-  // at most one class): each dimension's block by (birth, death), then by
-  // birth_simplex, in place (a buffer would be the pairs' peak memory).
+  // at most one class): each dimension's block by two stable passes, least
+  // significant key first (a buffer of one block, not of the whole list,
+  // which had become the pairs' peak memory).
   for (int dim = 0; dim < 3; ++dim) {
     const std::size_t first = list.size();
     for (const auto& [born, dies] : pairs.simplices[dim])
       list.push_back({dim, (*ranks[dim])[born], dies == kNone ? kNever : (*ranks[dim + 1])[dies], born, dies});
     release(pairs.simplices[dim]);
-    radix_sort_in_place(
-        std::span(list).subspan(first), [](const PersistencePair& p) { return std::uint64_t(p.birth) << 32 | p.death; },
-        [](const PersistencePair& a, const PersistencePair& b) { return a.birth_simplex < b.birth_simplex; });
+    const auto block = std::span(list).subspan(first);
+    radix_sort(block, [](const PersistencePair& p) { return p.birth_simplex; });
+    radix_sort(block, [](const PersistencePair& p) { return std::uint64_t(p.birth) << 32 | p.death; });
   }
   return list;
 }
