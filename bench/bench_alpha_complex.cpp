@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The whole alpha complex family (triangulation, intervals, exactly sorted
 // spectrum, persistence) of alpha::AlphaComplex against CGAL's Alpha_shape_3
-// and GUDHI's Alpha_complex + persistent cohomology, on the same point sets,
-// in one run; prints a table. See README.md.
+// and GUDHI's Alpha_complex + persistent cohomology, and against CGAL's
+// triangulation alone (issue 23's yardstick), on the same point sets, in one
+// run; prints a table. See README.md.
 //
 // Usage: bench_alpha_complex [--large]   (--large: the peers on 1e6 points too)
 #include <CGAL/Alpha_shape_3.h>
@@ -74,7 +75,7 @@ struct Side {
 };
 
 struct Result {
-  Side ours, cgal, gudhi;
+  Side ours, cgal, gudhi, cgal_triangulation;
   std::vector<double> ours_triangulation, ours_complex;  // the split of ours
   std::size_t memory_bytes = 0;                          // Triangulation + AlphaComplex
   std::size_t spectrum = 0, cgal_spectrum = 0;
@@ -97,23 +98,52 @@ void run_ours(const Case& c, Result& r) {
   r.ours_complex.push_back(split[1]);
 }
 
+std::vector<K::Point_3> cgal_points(const Case& c) {
+  std::vector<K::Point_3> pts;
+  for (const auto& p : c.points) pts.emplace_back(p.x, p.y, p.z);
+  return pts;
+}
+
+std::vector<K::Weighted_point_3> cgal_weighted_points(const Case& c) {
+  std::vector<K::Weighted_point_3> pts;
+  for (std::size_t i = 0; i < c.points.size(); ++i)
+    pts.emplace_back(K::Point_3(c.points[i].x, c.points[i].y, c.points[i].z), c.weights[i]);
+  return pts;
+}
+
 void run_cgal(const Case& c, Result& r) {
   if (c.weights.empty()) {
-    std::vector<K::Point_3> pts;
-    for (const auto& p : c.points) pts.emplace_back(p.x, p.y, p.z);
+    const auto pts = cgal_points(c);
     r.cgal.add(bench::measure([&] {
       const DelaunayAS as(pts.begin(), pts.end(), 0, DelaunayAS::GENERAL);
       r.cgal_spectrum = as.number_of_alphas();
     }));
   } else {
-    std::vector<K::Weighted_point_3> pts;
-    for (std::size_t i = 0; i < c.points.size(); ++i)
-      pts.emplace_back(K::Point_3(c.points[i].x, c.points[i].y, c.points[i].z), c.weights[i]);
+    const auto pts = cgal_weighted_points(c);
     r.cgal.add(bench::measure([&] {
       const RegularAS as(pts.begin(), pts.end(), 0, RegularAS::GENERAL);
       r.cgal_spectrum = as.number_of_alphas();
     }));
   }
+}
+
+// CGAL's sequential triangulation alone (Epick, as bench_triangulation).
+void run_cgal_triangulation(const Case& c, Result& r) {
+  std::size_t cells = 0;
+  if (c.weights.empty()) {
+    const auto pts = cgal_points(c);
+    r.cgal_triangulation.add(bench::measure([&] {
+      const CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+      cells = dt.number_of_finite_cells();
+    }));
+  } else {
+    const auto pts = cgal_weighted_points(c);
+    r.cgal_triangulation.add(bench::measure([&] {
+      const CGAL::Regular_triangulation_3<K> rt(pts.begin(), pts.end());
+      cells = rt.number_of_finite_cells();
+    }));
+  }
+  if (cells == 0) std::fprintf(stderr, "CGAL: no cells for %s\n", c.name.c_str());
 }
 
 template <class Complex>
@@ -166,17 +196,19 @@ int main(int argc, char** argv) {
       {"grid 47^3", testing::grid_points(47), {}, 3, true},
   };
 
-  std::printf("%-12s %7s %4s %7s %7s %7s %8s %8s %7s %7s %9s %10s %10s %11s %9s %9s %8s %8s\n", "set", "n", "reps",
-              "tri s", "alpha s", "ours s", "CGAL s", "GUDHI s", "o/CGAL", "o/GUDHI", "ours B/pt", "oursRSS/pt",
-              "CGALRSS/pt", "GUDHIRSS/pt", "spectrum", "CGALspec", "pairs", "GUDHIprs");
+  std::printf("%-12s %7s %4s %7s %7s %7s %8s %8s %7s %7s %8s %8s %9s %10s %10s %11s %9s %9s %8s %8s\n", "set", "n",
+              "reps", "tri s", "alpha s", "ours s", "CGAL s", "GUDHI s", "o/CGAL", "o/GUDHI", "CGALdt s", "o/CGALdt",
+              "ours B/pt", "oursRSS/pt", "CGALRSS/pt", "GUDHIRSS/pt", "spectrum", "CGALspec", "pairs", "GUDHIprs");
   std::fflush(stdout);
   // Ours on every set first, then the peers: their heaps (CGAL's and
   // GUDHI's many small blocks) would otherwise change our RSS growth.
   std::vector<Result> results(cases.size());
   for (std::size_t i = 0; i < cases.size(); ++i)
     for (int rep = 0; rep < cases[i].reps; ++rep) run_ours(cases[i], results[i]);
-  for (std::size_t i = 0; i < cases.size(); ++i)
+  for (std::size_t i = 0; i < cases.size(); ++i) {
     if (cases[i].peers) run_cgal(cases[i], results[i]), run_gudhi(cases[i], results[i]);
+    run_cgal_triangulation(cases[i], results[i]);  // once, on every set
+  }
 
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Case& c = cases[i];
@@ -191,6 +223,8 @@ int main(int argc, char** argv) {
     } else {
       std::printf("%8s %8s %7s %7s ", "-", "-", "-", "-");
     }
+    const double cgal_triangulation = r.cgal_triangulation.median_seconds();
+    std::printf("%8.3f %8.3f ", cgal_triangulation, ours / cgal_triangulation);
     std::printf("%9.1f %10.1f ", r.memory_bytes / n, r.ours.peak_bytes / n);
     if (c.peers)
       std::printf("%10.1f %11.1f %9zu %9zu %8zu %8zu\n", r.cgal.peak_bytes / n, r.gudhi.peak_bytes / n, r.spectrum,
