@@ -35,7 +35,7 @@ double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
 double sphere_part_area(std::span<const std::pair<Vec3, double>> halfspaces, std::span<const char> bounds,
                         const Vec3& m) {
   Sum area;
-  std::vector<Arc> set, scratch;
+  thread_local std::vector<Arc> set, scratch;  // kept from call to call: no allocation per cell
   for (std::size_t k = 0; k < halfspaces.size(); ++k) {
     const auto& [g, h] = halfspaces[k];
     const double length = norm(g);
@@ -117,8 +117,10 @@ double ErodedUnion::patch_area(Index c, int k) const {
     const double cos_b = (wi + length * length - b * b) / (2 * radius * length);
     return cos_b <= -1 || !apart(d, length, std::min(cos_b, 1.0));
   };
-  std::vector<std::pair<Vec3, double>> halfspaces;
-  std::vector<char> bounds(3, 1);
+  thread_local std::vector<std::pair<Vec3, double>> halfspaces;  // kept from call to call
+  thread_local std::vector<char> bounds;
+  halfspaces.clear();
+  bounds.assign(3, 1);
   for (int n = 0; n < 3; ++n) {
     Vec3 inward = cross(u[(n + 1) % 3], u[(n + 2) % 3]);  // towards u[n]
     if (dot(inward, u[n]) < 0) inward = -1.0 * inward;
