@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -723,6 +724,39 @@ TEST_CASE("structure: atoms alike in identity are ordered by position, whatever 
   REQUIRE(atoms.size() == 5);
   CHECK(atoms[1].position.y == -1.5);  // the two CB by position
   CHECK(atoms[3].position.z == -1);    // the CG kept: the smaller position
+}
+
+TEST_CASE("structure: the canonical order over chains and residues, whatever the order of the records",
+          "[structure]") {
+  // Five chains (digits, capitals and small letters compare as bytes),
+  // residue numbers with negatives, atoms of a residue out of name order,
+  // two atoms alike but for position; records shuffled (seeded): the
+  // atoms come sorted by chain, number, residue name, name, position
+  // (the oracle: a sort by those fields).
+  std::vector<std::string> records;
+  int serial = 0;
+  for (const char chain : {'b', 'B', '1', 'A', 'a'})
+    for (const int seq : {7, -2, 0, 12, 3})
+      for (const char* name : {"N", "CA", "C", "O", "CB", "CB"})
+        records.push_back(pdb_atom("ATOM", ++serial, name, ' ', "SER", chain, seq, seq + 0.1 * serial, chain, 0, 1,
+                                   name[0] == 'O' ? "O" : name[0] == 'N' ? "N" : "C"));
+  std::mt19937 rng(16);
+  for (int trial = 0; trial < 4; ++trial) {
+    std::string pdb;
+    for (const std::string& r : records) pdb += r;
+    const std::vector<Atom> atoms = molecule::parse_structure(pdb, "x.pdb").atoms;
+    REQUIRE(atoms.size() == records.size());
+    std::vector<Atom> oracle = atoms;
+    std::shuffle(oracle.begin(), oracle.end(), rng);
+    std::sort(oracle.begin(), oracle.end(), [](const Atom& a, const Atom& b) {
+      return std::tie(a.chain, a.seq_num, a.residue_name, a.name, a.position.x) <
+             std::tie(b.chain, b.seq_num, b.residue_name, b.name, b.position.x);
+    });
+    check_same_atoms(atoms, oracle);
+    CHECK(atoms.front().chain == "1");
+    CHECK(atoms.front().seq_num == -2);
+    std::shuffle(records.begin(), records.end(), rng);
+  }
 }
 
 TEST_CASE("structure: bad mmCIF values name the line and the text", "[structure]") {

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <charconv>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -543,6 +544,47 @@ auto canonical_key(const Atom& a) {
 
 bool canonical_less(const Atom& a, const Atom& b) { return canonical_key(a) < canonical_key(b); }
 
+// Sorts atoms into the canonical order. A file lists a residue's atoms
+// together, residues mostly in order: std::sort on the atoms themselves
+// moved four strings per swap and, on that nearly sorted input, fell back
+// to heapsort (0.8 G instructions on 150,000 atoms). Instead the indices are
+// sorted by the residue (chain's rank among the distinct chains, number,
+// insertion code), each residue's by canonical_less, and the atoms moved
+// once. Only atoms equal in every field tie, so the order is the same.
+void canonical_sort(std::vector<Atom>& atoms) {
+  struct Residue {
+    std::uint32_t chain;
+    int seq_num;
+    char icode;
+    std::uint32_t atom;
+  };
+  std::map<std::string, std::uint32_t> chains;
+  for (const Atom& a : atoms) chains.emplace(a.chain, 0);
+  std::uint32_t rank = 0;
+  for (auto& [chain, r] : chains) r = rank++;
+  std::vector<Residue> order;
+  order.reserve(atoms.size());
+  const std::uint32_t* chain = nullptr;
+  for (std::uint32_t i = 0; i < atoms.size(); ++i) {
+    const Atom& a = atoms[i];
+    if (i == 0 || a.chain != atoms[i - 1].chain) chain = &chains.find(a.chain)->second;
+    order.push_back({*chain, a.seq_num, a.icode, i});
+  }
+  auto residue = [](const Residue& r) { return std::tie(r.chain, r.seq_num, r.icode); };
+  std::sort(order.begin(), order.end(), [&](const Residue& a, const Residue& b) {
+    return std::tie(a.chain, a.seq_num, a.icode, a.atom) < std::tie(b.chain, b.seq_num, b.icode, b.atom);
+  });
+  for (auto begin = order.begin(); begin != order.end();) {
+    const auto end = std::find_if(begin, order.end(), [&](const Residue& r) { return residue(r) != residue(*begin); });
+    std::sort(begin, end, [&](const Residue& a, const Residue& b) { return canonical_less(atoms[a.atom], atoms[b.atom]); });
+    begin = end;
+  }
+  std::vector<Atom> sorted;
+  sorted.reserve(atoms.size());
+  for (const Residue& r : order) sorted.push_back(std::move(atoms[r.atom]));
+  atoms = std::move(sorted);
+}
+
 // Radii per atom, with one warning per element that gets the default;
 // warnings count only the atoms kept (`kept`), the ones a caller uses.
 class RadiusAssigner {
@@ -729,7 +771,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   // the atoms searched followed by the ligands (structure_copy) reads back
   // in the same order.
   for (std::vector<Atom>& atoms : kept_atoms) {
-    std::sort(atoms.begin(), atoms.end(), canonical_less);
+    canonical_sort(atoms);
     out.atoms.insert(out.atoms.end(), std::make_move_iterator(atoms.begin()), std::make_move_iterator(atoms.end()));
   }
   for (HeteroGroup& g : out.hetero_groups) std::sort(g.atoms.begin(), g.atoms.end(), canonical_less);
