@@ -31,7 +31,7 @@ double polyhedron_volume(const ConvexPolyhedron& q) { return ball_in_polyhedron(
 
 bool inside(const ConvexPolyhedron& q, const Vec3& x) {
   for (std::size_t f = 0; f < q.num_faces(); ++f)
-    if (dot(q.normal(f), x - q.loop(f)[0]) > 0) return false;
+    if (dot(q.normal(f), x - q.vertex(q.loop(f)[0])) > 0) return false;
   return true;
 }
 
@@ -90,7 +90,7 @@ TEST_CASE("ball in polyhedron: the two sides of a plane sum to the whole", "[bal
     }
     if (q.empty()) continue;
     const Vec3 n = point();
-    const double offset = trial % 3 == 0 ? dot(n, q.loop(0)[0]) : trial % 3 == 1 ? 0.0 : u(rng);
+    const double offset = trial % 3 == 0 ? dot(n, q.vertex(q.loop(0)[0])) : trial % 3 == 1 ? 0.0 : u(rng);
     ConvexPolyhedron below = q, above = q;
     below.clip(n, offset);
     above.clip(-1.0 * n, -offset);

@@ -44,18 +44,18 @@ BallPart ball_in_polyhedron(const ConvexPolyhedron& q, double r) {
   BallPart total;
   for (std::size_t f = 0; f < q.num_faces(); ++f) {
     const Vec3& normal = q.normal(f);
-    const std::span<const Vec3> loop = q.loop(f);
+    const std::span<const std::uint32_t> loop = q.loop(f);
     const std::size_t m = loop.size();
-    const double h = dot(normal, loop[0]);
+    const double h = dot(normal, q.vertex(loop[0]));
     if (std::fabs(h) >= r) {
       // The plane misses the ball: the sphere's part in the pyramid is its
       // solid angle, signed (Van Oosterom and Strackee on a fan of the loop;
       // positive seen from the face's inner side).
       double angle = 0;
-      const Vec3& a = loop[0];
+      const Vec3& a = q.vertex(loop[0]);
       const double la = norm(a);
       for (std::size_t k = 1; k + 1 < m; ++k) {
-        const Vec3 &b = loop[k], &c = loop[k + 1];
+        const Vec3 &b = q.vertex(loop[k]), &c = q.vertex(loop[k + 1]);
         const double lb = norm(b), lc = norm(c);
         angle += 2 * std::atan2(dot(a, cross(b, c)), la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la);
       }
@@ -68,7 +68,7 @@ BallPart ball_in_polyhedron(const ConvexPolyhedron& q, double r) {
     EdgeTriangle face{std::fabs(h), r, (r - std::fabs(h)) * (r + std::fabs(h)), 0};
     double sphere = 0, disc = 0;
     for (std::size_t k = 0; k < m; ++k) {
-      const Vec3 &p0 = loop[k], &p1 = loop[(k + 1) % m];
+      const Vec3 &p0 = q.vertex(loop[k]), &p1 = q.vertex(loop[(k + 1) % m]);
       const double length = norm(p1 - p0);
       if (length == 0) continue;
       const Vec3 u = (1 / length) * (p1 - p0);

@@ -2,6 +2,7 @@
 // A convex polyhedron as its faces, clipped by half-spaces: the part of a
 // tetrahedron inside one power cell (UnionOfBalls::cell_cover).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -13,6 +14,7 @@ namespace alpha {
 
 class ConvexPolyhedron {
 public:
+  ConvexPolyhedron() = default;  // empty
   ConvexPolyhedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { reset(a, b, c, d); }
 
   // Becomes the tetrahedron abcd, not flat (its faces' outward sides are
@@ -26,19 +28,28 @@ public:
 
   bool empty() const { return normal_.empty(); }
   std::size_t num_faces() const { return normal_.size(); }
-  // The face's outward unit normal, and its vertex loop, counter-clockwise
-  // about the normal.
+  // The face's outward unit normal, and its vertex loop (indices of
+  // vertex()), counter-clockwise about the normal.
   const Vec3& normal(std::size_t f) const { return normal_[f]; }
-  std::span<const Vec3> loop(std::size_t f) const { return {vertex_.data() + start_[f], start_[f + 1] - start_[f]}; }
+  std::span<const std::uint32_t> loop(std::size_t f) const {
+    return {corner_.data() + start_[f], start_[f + 1] - start_[f]};
+  }
+  const Vec3& vertex(std::uint32_t v) const { return vertex_[v]; }
 
 private:
+  // Every vertex once (a clip classifies each once and cuts each edge
+  // once), and each one referenced by a loop. A loop may name a vertex
+  // twice in a row (a cap lists each point cut on an edge once per face
+  // of the edge).
+  void keep_referenced();
   std::vector<Vec3> normal_, vertex_;
-  std::vector<std::uint32_t> start_;  // face f's loop: vertex_[start_[f], start_[f + 1])
+  std::vector<std::uint32_t> corner_, start_{0};  // face f's loop: corner_[start_[f], start_[f + 1])
   // Scratch for clip, kept to avoid allocations.
   std::vector<Vec3> next_normal_, next_vertex_;
-  std::vector<std::uint32_t> next_start_;
+  std::vector<std::uint32_t> next_corner_, next_start_, renumber_;
   std::vector<double> side_;
-  std::vector<std::pair<double, Vec3>> cap_;
+  std::vector<std::array<std::uint32_t, 3>> cut_;  // (inside end, outside end, the point cut)
+  std::vector<std::pair<double, std::uint32_t>> cap_;
 };
 
 }  // namespace alpha

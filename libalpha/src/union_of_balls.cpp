@@ -402,14 +402,17 @@ CellCover UnionOfBalls::cell_cover(Index c) const {
       if (dot(inward[k], x - p[(k + 1) % 4]) <= -r) return true;
     return false;
   };
-  std::vector<Index> near;  // the balls that reach the cell
+  // Kept from call to call (no allocation per cell): the balls that reach
+  // the cell, the planes of P_i, the cell's part of one.
+  thread_local std::vector<Index> near;
+  thread_local std::vector<std::pair<Vec3, double>> cuts;
+  thread_local ConvexPolyhedron part;
+  near.clear();
   balls_.visit(center, reach + max_radius_, [&](Index i) {
     if (!beyond(t.point(i), radius_[i])) near.push_back(i);
   });
   std::sort(near.begin(), near.end());
   Sum volume, area;
-  ConvexPolyhedron part(p[0], p[1], p[2], p[3]);
-  std::vector<std::pair<Vec3, double>> cuts;  // the planes of P_i
   for (Index i : near) {
     // The cell's part of the power cell of i, about i's centre: B_i & P_i
     // is B_i cut by the half-spaces of i's neighbours in K, and in the cell
