@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -75,7 +76,8 @@ TEST_CASE("PointGrid visits a superset of the points within the radius, each onc
 TEST_CASE("PointGrid visits exactly the points of the cells meeting the cube, in key order", "[point_grid]") {
   // Compact points (cells found by index) and the same with a far outlier
   // (too many empty cells for an index: found by binary search) must visit
-  // alike: the cells' points ordered by cell (x, then y, then z), then id.
+  // alike: the cells' points ordered by cell (x, then y, then z), then id,
+  // whatever the order they were added in (here shuffled).
   const double spacing = 1.7;
   const std::vector<Vec3> compact = testing::random_points(2000, 33, 30.0);
   std::vector<Vec3> sparse = compact;
@@ -85,7 +87,10 @@ TEST_CASE("PointGrid visits exactly the points of the cells meeting the cube, in
   std::uniform_real_distribution<double> coord(-3, 33), radius(0, 6);
   for (const std::vector<Vec3>* pts : {&compact, static_cast<const std::vector<Vec3>*>(&sparse)}) {
     alpha::PointGrid g(spacing);
-    for (Index i = 0; i < Index(pts->size()); ++i) g.add((*pts)[i], i);
+    std::vector<Index> order(pts->size());
+    std::iota(order.begin(), order.end(), Index(0));
+    std::shuffle(order.begin(), order.end(), rng);
+    for (const Index i : order) g.add((*pts)[i], i);
     g.finish();
     for (int k = 0; k < 100; ++k) {
       const Vec3 c{coord(rng), coord(rng), coord(rng)};

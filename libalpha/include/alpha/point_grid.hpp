@@ -19,22 +19,7 @@ public:
 
   void add(const Vec3& p, Index id) { entries_.emplace_back(key(p), id); }
   // Call once after the last add, before any query.
-  void finish() {
-    std::sort(entries_.begin(), entries_.end());
-    for (const auto& e : entries_)
-      for (int a = 0; a < 3; ++a) low_[a] = std::min(low_[a], e.first[a]), high_[a] = std::max(high_[a], e.first[a]);
-    // Each occupied range's cell's first entry, when the range has not
-    // many more cells than points (a query then finds a cell by index, not
-    // by binary search); sorted keys run in cell-index order.
-    start_.clear();
-    if (entries_.empty()) return;
-    double cells = 1;
-    for (int a = 0; a < 3; ++a) cells *= double(high_[a]) - double(low_[a]) + 1;
-    if (cells > 8 * double(entries_.size()) + 4096) return;
-    start_.assign(std::size_t(cells) + 1, Index(0));
-    for (const auto& e : entries_) ++start_[cell_index(e.first) + 1];
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  }
+  void finish();
 
   // Calls f(id) for every point in the grid cells that meet the cube of
   // half-side `radius` about `center`: a superset of the points within
