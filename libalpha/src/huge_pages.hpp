@@ -4,6 +4,7 @@
 // hundreds of megabytes once; 2 MiB pages take 512 times fewer. Only a hint
 // to the kernel (Linux, THP in "madvise" mode); a no-op elsewhere.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,26 @@ void assign_huge(std::vector<T>& v, std::size_t n, const T& value = T()) {
   v.clear();
   reserve_huge(v, n);
   v.assign(n, value);
+}
+
+// For an array read once from the front: v[0, end) has been read for the
+// last time, and the pages from the one holding v[begin] up to v[end] that
+// hold nothing else of v go back to the system (Linux; a no-op elsewhere),
+// so that arrays growing meanwhile do not add to the peak. Their contents
+// are lost (they read as zeros if touched again). Called with the previous
+// call's end as begin, no page is left behind.
+template <class T>
+void discard_read([[maybe_unused]] std::vector<T>& v, [[maybe_unused]] std::size_t begin,
+                  [[maybe_unused]] std::size_t end) {
+#ifdef MADV_DONTNEED
+  constexpr std::uintptr_t kPage = 4096;
+  const auto address = [&](std::size_t i) { return reinterpret_cast<std::uintptr_t>(v.data() + i); };
+  // Not below the array's first whole page: the allocator's own data may
+  // share the page before it.
+  const auto first = std::max(address(begin) & ~(kPage - 1), (address(0) + kPage - 1) & ~(kPage - 1));
+  const auto last = address(end) & ~(kPage - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#endif
 }
 
 // Frees v's storage (v = {} would keep it: that assigns an empty list).

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+// discard_read (libalpha/src/huge_pages.hpp): the pages it gives back hold
+// only the part already read, never a value at or after `end`, and
+// successive calls leave no page of the read part behind.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "../libalpha/src/huge_pages.hpp"
+
+using alpha::discard_read;
+
+TEST_CASE("discard_read keeps every value not yet read", "[memory]") {
+  const std::size_t n = 1 << 20;
+  std::vector<std::uint32_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = std::uint32_t(i) | 1;  // never 0
+  // Steps not multiples of a page (1024 values), as the alpha complex's.
+  std::size_t read = 0;
+  for (std::size_t end = 777; end < n; end += 4099) {
+    discard_read(v, read, end);
+    read = end;
+    for (std::size_t i = end; i < n; i += 97) REQUIRE(v[i] == (std::uint32_t(i) | 1));
+    REQUIRE(v[end] == (std::uint32_t(end) | 1));
+  }
+  for (std::size_t i = read; i < n; ++i) REQUIRE(v[i] == (std::uint32_t(i) | 1));
+#ifdef MADV_DONTNEED
+  // Given back: read as zeros, except in the first page (shared with the
+  // allocator's data) and the last page holding a value not yet read.
+  const auto address = [&](std::size_t i) { return reinterpret_cast<std::uintptr_t>(v.data() + i); };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < read; ++i)
+    if (v[i] != 0) {
+      ++kept;
+      REQUIRE((address(i) / 4096 == address(0) / 4096 || address(i) / 4096 == address(read) / 4096));
+    }
+  REQUIRE(kept < 2 * 1024);
+#endif
+}
