@@ -34,17 +34,16 @@ private:
 // Filtration key: rank, then dimension, then id.
 using Key = std::tuple<Index, int, Index>;
 
-// The simplices of one dimension in filtration order (by rank, then id),
-// each as rank << 32 | id: the ranks come along at no cost.
-std::vector<std::uint64_t> filtration_order(const std::vector<Index>& rank) {
-  std::vector<std::uint64_t> keyed;
-  reserve_huge(keyed, rank.size());
-  for (Index i = 0; i < rank.size(); ++i) keyed.push_back(std::uint64_t(rank[i]) << 32 | i);
-  radix_sort(std::span(keyed), [](std::uint64_t k) { return std::uint32_t(k >> 32); });  // stable: ids stay increasing
-  return keyed;
+// The simplices of one dimension in filtration order (by rank, then id):
+// their ids, sorted stably by rank (4 bytes a simplex while sorting, not 8
+// with the ranks along: the triangles' would be 216 MB at 1e6 points).
+std::vector<Index> filtration_order(const std::vector<Index>& rank) {
+  std::vector<Index> ids;
+  reserve_huge(ids, rank.size());
+  for (Index i = 0; i < rank.size(); ++i) ids.push_back(i);
+  radix_sort(std::span(ids), [&](Index i) { return rank[i]; });
+  return ids;
 }
-Index id_of(std::uint64_t keyed) { return Index(keyed); }
-Index rank_of(std::uint64_t keyed) { return Index(keyed >> 32); }
 
 // A column of the dimension-1 reduction, as a max-heap of edge keys (the
 // filtration order's rank << 32 | id) with repeats: over Z/2, equal entries
@@ -99,19 +98,18 @@ struct Pairs {
 // Dimension 0: edges in filtration order join vertex components (elder
 // rule). Returns, by edge id, 1 for the edges that create a cycle instead.
 std::vector<char> vertex_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r, Pairs& pairs) {
-  const std::vector<std::uint64_t> edges = filtration_order(r.edge);
+  const std::vector<Index> edges = filtration_order(r.edge);
   ElderUnionFind vertices(t.num_points());
   auto vertex_key = [&](Index v) { return std::make_tuple(r.vertex[v], v); };
   std::vector<char> creates_cycle(edges.size(), 0);
-  for (const std::uint64_t k : edges) {
-    const Index e = id_of(k);
+  for (const Index e : edges) {
     Index a = vertices.find(s.edge(e)[0]), b = vertices.find(s.edge(e)[1]);
     if (a == b) {
       creates_cycle[e] = 1;
       continue;
     }
     if (vertex_key(a) > vertex_key(b)) std::swap(a, b);
-    pairs.add(0, r.vertex[b], rank_of(k), b, e);
+    pairs.add(0, r.vertex[b], r.edge[e], b, e);
     vertices.merge(a, b);
   }
   for (Index v = 0; v < t.num_points(); ++v)
@@ -125,7 +123,7 @@ std::vector<char> vertex_pairs(const Triangulation& t, const Simplices& s, const
 // instead, in filtration order.
 std::vector<Index> complement_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r,
                                     Pairs& pairs) {
-  const std::vector<std::uint64_t> triangles = filtration_order(r.triangle);
+  const std::vector<Index> triangles = filtration_order(r.triangle);
   ElderUnionFind complement(t.num_cells() + 1);
   auto node = [&](Index c) { return t.is_infinite(c) ? Index(0) : c + 1; };
   // A complement component is born (in reverse) at its last-entering cell.
@@ -134,7 +132,7 @@ std::vector<Index> complement_pairs(const Triangulation& t, const Simplices& s, 
   std::vector<Index> killers;
   reserve_huge(killers, triangles.size() - t.num_finite_cells());
   for (Index k = Index(triangles.size()); k-- > 0;) {
-    const Index f = id_of(triangles[k]);
+    const Index f = triangles[k];
     const auto cells = s.triangle_cells(f);
     Index a = complement.find(node(cells[0])), b = complement.find(node(cells[1]));
     if (a == b) {
@@ -142,7 +140,7 @@ std::vector<Index> complement_pairs(const Triangulation& t, const Simplices& s, 
       continue;
     }
     if (cell_key(a) < cell_key(b)) std::swap(a, b);  // a: elder (enters later)
-    pairs.add(2, rank_of(triangles[k]), r.cell[b - 1], f, b - 1);
+    pairs.add(2, r.triangle[f], r.cell[b - 1], f, b - 1);
     complement.merge(a, b);
   }
   std::reverse(killers.begin(), killers.end());
@@ -152,62 +150,53 @@ std::vector<Index> complement_pairs(const Triangulation& t, const Simplices& s, 
 // Dimension 1: reduces the boundaries of the cycle-killing triangles,
 // restricted to cycle-creating edges, in filtration order; an edge's key
 // (rank << 32 | id) is its place in the filtration order. Columns are found
-// through their pivots. Most columns need no addition and most reduced ones
-// have at most three entries: a reduced column stays in its triangle's
-// boundary slot (edge ids, kNone pads), and only a longer one goes to
-// `longer` (its length, then its entries), the slot then holding kLonger and
-// the offset. Marks the paired edges 2 in creates_cycle.
+// through their pivots. Most columns need no addition: such a reduced
+// column is its triangle's boundary, read again from the triangle; only
+// the others are stored (their length, then their entries). Marks the
+// paired edges 2 in creates_cycle.
 void cycle_pairs(const Simplices& s, const FiltrationRanks& r, const std::vector<Index>& killers,
                  std::vector<char>& creates_cycle, Pairs& pairs) {
-  using Slot = std::array<Index, 3>;
-  std::vector<Slot> slots;
-  assign_huge(slots, killers.size());
-  for (std::size_t j = 0; j < killers.size(); ++j)
-    for (int i = 0; i < 3; ++i) {
-      const Index e = s.triangle_edges(killers[j])[i];
-      slots[j][i] = creates_cycle[e] ? e : kNone;
-    }
   auto key = [&](Index e) { return std::uint64_t(r.edge[e]) << 32 | e; };
-  constexpr Index kLonger = kNone - 1;  // not an edge id
-  std::vector<Index> reduced_at;        // by pivot edge: the slot
+  // By pivot edge: the reduced column, as its triangle's id or as kStored |
+  // its offset in `stored`.
+  constexpr Index kStored = Index(1) << 31;
+  if (s.num_triangles() > kStored) fail("persistence: too many triangles for 31-bit ids", ErrorKind::LimitExceeded);
+  std::vector<Index> reduced_at;
   assign_huge(reduced_at, s.num_edges(), kNone);
-  std::vector<Index> longer;
-  reserve_huge(longer, 2 * killers.size());  // address space: no copies as it grows
-  auto column_of = [&](const Slot& b) {
-    return b[0] == kLonger ? std::span<const Index>(longer.data() + b[1] + 1, longer[b[1]]) : std::span<const Index>(b);
+  std::vector<Index> stored;
+  reserve_huge(stored, 2 * killers.size());  // address space: no copies as it grows
+  auto for_each_entry = [&](Index column, auto visit) {
+    if (column & kStored) {
+      const Index* c = stored.data() + (column & ~kStored);
+      std::for_each(c + 1, c + 1 + c[0], visit);
+    } else {
+      for (const Index e : s.triangle_edges(column))
+        if (creates_cycle[e]) visit(e);
+    }
   };
   HeapColumn column;
-  std::vector<Index> reduced;
-  for (std::size_t j = 0; j < killers.size(); ++j) {
-    Slot& b = slots[j];
+  for (const Index f : killers) {
     std::uint64_t p = HeapColumn::kEmpty;  // the largest entry's key
-    for (const Index e : b)
-      if (e != kNone && (p == HeapColumn::kEmpty || key(e) > p)) p = key(e);
+    for_each_entry(f, [&](Index e) {
+      if (p == HeapColumn::kEmpty || key(e) > p) p = key(e);
+    });
+    Index at = f;
     if (p != HeapColumn::kEmpty && reduced_at[Index(p)] != kNone) {
       column.clear();
-      for (const Index e : b)
-        if (e != kNone) column.push(key(e));
+      for_each_entry(f, [&](Index e) { column.push(key(e)); });
       for (; p != HeapColumn::kEmpty && reduced_at[Index(p)] != kNone; p = column.pivot())
-        for (const Index e : column_of(slots[reduced_at[Index(p)]]))
-          if (e != kNone) column.push(key(e));
-      reduced.clear();
+        for_each_entry(reduced_at[Index(p)], [&](Index e) { column.push(key(e)); });
+      if (stored.size() >= kStored) fail("persistence: too many reduced entries for 31-bit offsets", ErrorKind::LimitExceeded);
+      at = kStored | Index(stored.size());
+      stored.push_back(0);
       for (std::uint64_t x = column.pop_pivot(); x != HeapColumn::kEmpty; x = column.pop_pivot())
-        reduced.push_back(Index(x));
-      b.fill(kNone);
-      if (reduced.size() <= b.size()) {
-        std::copy(reduced.begin(), reduced.end(), b.begin());
-      } else {
-        b = {kLonger, Index(longer.size()), kNone};
-        longer.push_back(Index(reduced.size()));
-        longer.insert(longer.end(), reduced.begin(), reduced.end());
-        if (longer.size() >= kLonger) fail("persistence: too many reduced entries for 32-bit offsets", ErrorKind::LimitExceeded);
-      }
+        stored.push_back(Index(x)), ++stored[at & ~kStored];
     }
     if (p == HeapColumn::kEmpty) continue;  // cannot happen for a killing triangle
-    const Index edge = Index(p), f = killers[j];
+    const Index edge = Index(p);
     pairs.add(1, r.edge[edge], r.triangle[f], edge, f);
     creates_cycle[edge] = 2;
-    reduced_at[edge] = Index(j);
+    reduced_at[edge] = at;
   }
 }
 
@@ -236,17 +225,16 @@ std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Sim
   std::vector<PersistencePair> list;
   reserve_huge(list, pairs.simplices[0].size() + pairs.simplices[1].size() + pairs.simplices[2].size());
   // By (dim, birth, death, birth_simplex), a total order (a simplex creates
-  // at most one class): each dimension's block by two stable passes, least
-  // significant key first (a buffer of one block, not of the whole list,
-  // which had become the pairs' peak memory).
+  // at most one class): each dimension's block sorted in place (a buffer
+  // would add to the peak memory).
   for (int dim = 0; dim < 3; ++dim) {
     const std::size_t first = list.size();
     for (const auto& [born, dies] : pairs.simplices[dim])
       list.push_back({dim, (*ranks[dim])[born], dies == kNone ? kNever : (*ranks[dim + 1])[dies], born, dies});
     release(pairs.simplices[dim]);
     const auto block = std::span(list).subspan(first);
-    radix_sort(block, [](const PersistencePair& p) { return p.birth_simplex; });
-    radix_sort(block, [](const PersistencePair& p) { return std::uint64_t(p.birth) << 32 | p.death; });
+    radix_sort_in_place(block, [](const PersistencePair& p) { return std::uint64_t(p.birth) << 32 | p.death; },
+                        [](const PersistencePair& p) { return p.birth_simplex; });
   }
   return list;
 }
