@@ -50,26 +50,20 @@ SurfaceMesh icosphere(int levels) {
   return m;
 }
 
-double volume(const SurfaceMesh& m) {
-  double v = 0;
-  for (const auto& [a, b, c] : m.triangles) v += dot(m.points[a], cross(m.points[b], m.points[c])) / 6;
-  return v;
-}
-
 }  // namespace
 
 TEST_CASE("chord offset: a sphere's mesh holds its volume", "[chord_offset]") {
   const double ball = 4 * std::numbers::pi / 3;
   for (int levels : {2, 3}) {
     SurfaceMesh m = icosphere(levels);
-    const double before = volume(m) / ball - 1;
+    const double before = alpha::enclosed_volume(m) / ball - 1;
     // Outward normals: the points themselves; a flat cap's points (zero)
     // stay where they are.
     std::vector<Vec3> normals = m.points;
     normals[0] = {};
     const Vec3 kept = m.points[0];
     offset_chords(m, normals);
-    const double after = volume(m) / ball - 1;
+    const double after = alpha::enclosed_volume(m) / ball - 1;
     INFO(levels << " levels: " << before << " -> " << after);
     CHECK(before < -0.005);
     CHECK(std::fabs(after) < std::fabs(before) / 10);

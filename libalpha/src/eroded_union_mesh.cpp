@@ -8,6 +8,7 @@
 #include <list>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "alpha/error.hpp"
@@ -29,6 +30,17 @@ constexpr double kRootPrecision = 1e-4;
 // enough to stay apart in a file's single precision (a float's step is
 // 6e-5 A at 500 A), or triangles at a node cross once written.
 constexpr double kNodeGap = 1e-3;
+// How far across a lattice triangle (a fraction of its edge) the second
+// point of a cast's mouth boundary is sought, for the boundary's direction
+// where the molecular surface meets it (cells_mesh).
+constexpr double kCreaseProbe = 0.125;
+// A boundary point inserted on a segment is at least this fraction of the
+// spacing off it.
+constexpr double kCreaseDepth = 0.01;
+// A crease's point stays this far inside its lattice triangle (barycentric),
+// and none is sought next to a vertex this close to a node (of its edge):
+// the triangles there are too thin to bend without crossing once written.
+constexpr double kCreaseGap = 0.1;
 // Blocks whose neighbourhoods are kept.
 constexpr std::size_t kCachedBlocks = 8;
 // Cubes per axis of the parts of a block whose crossings ask a
@@ -331,10 +343,24 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
     if (near.nearest(hoods.center(first), r + hoods.half_diagonal()).on == Nearest::On::far) return;  // in the body
     for (std::size_t n : nodes) inside[n] = held(near, lattice.node(n));
   });
-  std::vector<Vec3> normals;  // per point: the molecular surface's there, zero elsewhere
-  SurfaceMesh mesh = contour(lattice, inside, [&](std::size_t a, std::size_t b, std::size_t cube) {
+  // Where the cast's boundary leaves the segment from held a to b not held
+  // (its parameter), by bisection on that membership.
+  const auto leaves = [&](const Nearby& near, const Vec3& a, const Vec3& b) {
+    double ta = 0, tb = 1;  // held at ta, not at tb
+    while (tb - ta > kRootPrecision) {
+      const double mid = (ta + tb) / 2;
+      (held(near, along(a, b, mid)) ? ta : tb) = mid;
+    }
+    return (ta + tb) / 2;
+  };
+  // Per point: the molecular surface's normal there (zero elsewhere), where
+  // it is and the ends of its lattice edge (inside, outside).
+  std::vector<Vec3> normals, points;
+  std::vector<std::pair<std::size_t, std::size_t>> ends;
+  const auto vertex = [&](std::size_t a, std::size_t b, std::size_t cube) {
     const Nearby& near = hoods.of_cube(cube);
     const Vec3 pa = lattice.node(a), pb = lattice.node(b);
+    ends.emplace_back(a, b);
     // Most crossings are on the molecular surface, b in the body: found by
     // Newton's method as the surface's vertices are, and kept when the
     // point just before it is held (else the cast ends earlier: at a
@@ -344,17 +370,65 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
       const double t = dot(p - pa, pb - pa) / dot(pb - pa, pb - pa);
       if (held(near, along(pa, pb, t - kRootPrecision))) {
         normals.push_back((1 / norm(p - n.point)) * (p - n.point));  // away from F: into the body
-        return p;
+        return points.emplace_back(p);
       }
     }
-    double ta = 0, tb = 1;  // held at ta, not at tb
-    while (tb - ta > kRootPrecision) {
-      const double mid = (ta + tb) / 2;
-      (held(near, along(pa, pb, mid)) ? ta : tb) = mid;
-    }
     normals.push_back({});
-    return along(pa, pb, (ta + tb) / 2);
-  });
+    return points.emplace_back(along(pa, pb, leaves(near, pa, pb)));
+  };
+  // Where the molecular surface meets a mouth (or another cell's share) the
+  // cast has a crease, whose corner the lattice's segment between a vertex
+  // on either side would cut (the volume lost goes as the crease's length
+  // times the spacing squared). The crease's point on their lattice
+  // triangle: where the surface's tangent there meets the other
+  // boundary's line, through the vertex on it and a second point found an
+  // eighth of the way beyond the triangle's edge; taken from the middle of
+  // the segment toward it only as far as the triangle allows, strictly
+  // inside (beyond it the lattice misses the cast anyway); none when the
+  // two lines are near parallel or it is too close to the segment.
+  const auto crease = [&](Index p, Index q) -> std::optional<Vec3> {
+    const bool p_on = normals[p] != Vec3{}, q_on = normals[q] != Vec3{};
+    if (p_on == q_on) return std::nullopt;
+    if (q_on) std::swap(p, q);  // p on the molecular surface
+    const auto [pa, pb] = ends[p];
+    const auto [qa, qb] = ends[q];
+    const Vec3 A = lattice.node(pa), B = lattice.node(pb), C = lattice.node(qa), D = lattice.node(qb);
+    // Not next to a node (kCreaseGap).
+    for (const auto& [v, a, b] : {std::tuple{points[p], A, B}, std::tuple{points[q], C, D}}) {
+      const double t = dot(v - a, b - a) / dot(b - a, b - a);
+      if (!(t > kCreaseGap && t < 1 - kCreaseGap)) return std::nullopt;
+    }
+    // The triangle: the shared node (inside or outside) and the two others.
+    const Vec3 shared = pa == qa ? A : B, p_end = pa == qa ? B : A, q_end = pa == qa ? D : C;
+    const Vec3 face = cross(p_end - shared, q_end - shared);
+    const double face2 = dot(face, face);
+    const auto weights = [&](const Vec3& x) {  // barycentric: of p_end, q_end, shared
+      const double w_p = dot(cross(q_end - shared, x - shared), face) / -face2;
+      const double w_q = dot(cross(p_end - shared, x - shared), face) / face2;
+      return std::array<double, 3>{w_p, w_q, 1 - w_p - w_q};
+    };
+    const Nearby& near = hoods.of(pa);
+    const Vec3 s0 = pa == qa ? C : C - kCreaseProbe * (A - C), s1 = pa == qa ? D - kCreaseProbe * (B - D) : D;
+    if (!held(near, s0) || held(near, s1)) return std::nullopt;
+    const double t = leaves(near, s0, s1);
+    // On the molecular surface there too: the crease is that close to q.
+    if (near.nearest(along(s0, s1, t + kRootPrecision), r).on == Nearest::On::far) return std::nullopt;
+    const Vec3 tangent = cross(face, normals[p]), other = along(s0, s1, t) - points[q];
+    const double sine = dot(cross(tangent, other), face);
+    if (!(std::fabs(sine) > 1e-3 * norm(tangent) * norm(other) * norm(face))) return std::nullopt;
+    const Vec3 target = points[p] + (dot(cross(points[q] - points[p], other), face) / sine) * tangent;
+    const Vec3 middle = 0.5 * (points[p] + points[q]);
+    const std::array<double, 3> from = weights(middle), to = weights(target);
+    double reach = 1;
+    for (int k = 0; k < 3; ++k)
+      if (to[k] < from[k]) reach = std::min(reach, (from[k] - kCreaseGap) / (from[k] - to[k]));
+    const Vec3 x = middle + std::max(reach, 0.0) * (target - middle);
+    if (!(norm(x - middle) > kCreaseDepth * lattice.spacing)) return std::nullopt;
+    normals.push_back({});
+    ends.emplace_back(pa, qb);  // not a lattice edge's: never asked for
+    return points.emplace_back(x);
+  };
+  SurfaceMesh mesh = contour(lattice, inside, vertex, crease);
   offset_chords(mesh, normals);
   return mesh;
 }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
+#include <optional>
 #include <vector>
 
 #include "alpha/error.hpp"
@@ -88,7 +90,8 @@ private:
 }  // namespace
 
 SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& inside,
-                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex) {
+                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex,
+                    const ContourSplit& split) {
   const auto& size = lattice.size;
   if (inside.size() != lattice.num_nodes()) fail("contour: one flag per lattice node expected");
   for (std::size_t n = 0; n < inside.size(); ++n) {
@@ -116,6 +119,32 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
     }
     return slot;
   };
+  // Segment (its two vertex ids) -> the point inserted on it, kNone for
+  // none, kNone - 1 when split() declined.
+  EdgeTable segment_point;
+  constexpr Index kDeclined = kNone - 1;
+  // Fans the polygon (vertex ids counter-clockwise from outside) from its
+  // first inserted point, or from its first vertex when none.
+  const auto polygon = [&](std::initializer_list<Index> ids) {
+    std::array<Index, 8> v{};
+    std::size_t n = 0, apex = 0;
+    bool inserted = false;
+    for (auto it = ids.begin(); it != ids.end(); ++it) {
+      v[n++] = *it;
+      if (!split) continue;
+      const Index p = *it, q = it + 1 == ids.end() ? *ids.begin() : *(it + 1);
+      Index& s = segment_point.at((std::uint64_t(std::min(p, q)) << 32) + std::max(p, q));
+      if (s == kNone) {
+        const std::optional<Vec3> x = split(p, q);
+        s = x ? Index(mesh.points.size()) : kDeclined;
+        if (x) mesh.points.push_back(*x);
+      }
+      if (s == kDeclined) continue;
+      if (!inserted) apex = n, inserted = true;
+      v[n++] = s;
+    }
+    for (std::size_t k = 1; k + 1 < n; ++k) mesh.triangles.push_back({v[apex], v[(apex + k) % n], v[(apex + k + 1) % n]});
+  };
   const std::size_t dj = size[0], dk = size[0] * size[1];
   const auto cube = [&](std::size_t i, std::size_t j, std::size_t k) {
     // Most cubes have all corners alike (no surface): told by 8 reads.
@@ -138,13 +167,11 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
         const bool a_in = mask >> p[0] & 1, b_in = mask >> p[1] & 1, c_in = mask >> p[2] & 1, d_in = mask >> p[3] & 1;
         const std::size_t a = node[p[0]], b = node[p[1]], c = node[p[2]], d = node[p[3]];
         if (count == 1 && a_in) {
-          mesh.triangles.push_back({point(a, b), point(a, c), point(a, d)});
+          polygon({point(a, b), point(a, c), point(a, d)});
         } else if (count == 3 && !a_in) {
-          mesh.triangles.push_back({point(b, a), point(d, a), point(c, a)});
+          polygon({point(b, a), point(d, a), point(c, a)});
         } else if (count == 2 && a_in && b_in && !c_in && !d_in) {
-          const Index ac = point(a, c), ad = point(a, d), bd = point(b, d), bc = point(b, c);
-          mesh.triangles.push_back({ac, ad, bd});
-          mesh.triangles.push_back({ac, bd, bc});
+          polygon({point(a, c), point(a, d), point(b, d), point(b, c)});
         } else {
           continue;
         }
@@ -160,6 +187,12 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
           for (std::size_t j = bj; j < std::min(bj + B, size[1] - 1); ++j)
             for (std::size_t i = bi; i < std::min(bi + B, size[0] - 1); ++i) cube(i, j, k);
   return mesh;
+}
+
+double enclosed_volume(const SurfaceMesh& mesh) {
+  double v = 0;
+  for (const auto& [a, b, c] : mesh.triangles) v += dot(mesh.points[a], cross(mesh.points[b], mesh.points[c]));
+  return v / 6;
 }
 
 }  // namespace alpha

@@ -35,7 +35,7 @@ std::map<alpha::Index, std::size_t> cell_ranks(const Cavities& cavities, const C
 
 // The cast of one cavity, in the colour of its rank.
 TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_t rank, double resolution) {
-  TriangleMesh m = from(alpha::cells_mesh(eu, cavity.cells, cast_spacing(resolution, cavity.ms_volume)));
+  TriangleMesh m = from(cast_mesh(eu, cavity, resolution));
   m.vertex_colors.assign(m.points.size(), rank_color(rank));
   m.vertex_sites.assign(m.points.size(), int(rank));
   m.face_colors.assign(m.triangles.size(), rank_color(rank));
@@ -47,6 +47,16 @@ TriangleMesh cast(const alpha::ErodedUnion& eu, const Cavity& cavity, std::size_
 double cast_spacing(double resolution, double ms_volume) {
   return kCastResolution * (resolution / kDefaultMeshResolution) *
          std::clamp(std::cbrt(ms_volume / kFullResolutionCast), 0.25, 1.0);
+}
+
+alpha::SurfaceMesh cast_mesh(const alpha::ErodedUnion& eu, const Cavity& cavity, double resolution) {
+  const double spacing = cast_spacing(resolution, cavity.ms_volume);
+  alpha::SurfaceMesh m = alpha::cells_mesh(eu, cavity.cells, spacing);
+  const double error = std::fabs(alpha::enclosed_volume(m) / cavity.ms_volume - 1);
+  // The error goes as the spacing squared: aim at half the tolerance.
+  if (error > kCastTolerance)
+    m = alpha::cells_mesh(eu, cavity.cells, spacing * std::max(0.5, std::sqrt(kCastTolerance / 2 / error)));
+  return m;
 }
 
 PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {

@@ -29,7 +29,12 @@
 // molecular surface are found as the
 // surface's are (Newton's method on the distance); the others (mouths,
 // where another cell's share begins) by bisection on that membership, to
-// 1e-4 of the spacing.
+// 1e-4 of the spacing. Where the molecular surface meets a mouth the cast
+// has a crease, whose corner a lattice cuts (a volume of the crease's
+// length times the spacing squared): the segment between a vertex on
+// either side is bent toward the crease's point on their lattice triangle
+// (contour's split), found from the surface's tangent plane and a second
+// point of the mouth.
 //
 // Cost: blocks of the lattice that the balls alone show to be outside the
 // union or deep in the body (alpha/nearest_ball.hpp) are labelled without

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "alpha/geometry.hpp"
@@ -46,6 +47,9 @@ struct SurfaceMesh {
   std::vector<std::array<Index, 3>> triangles;
 };
 
+// The volume a closed mesh so oriented encloses (the divergence theorem).
+double enclosed_volume(const SurfaceMesh& mesh);
+
 // Cubes are visited in blocks of kContourBlock^3 (a caller's cache of what
 // is near a block stays valid for many calls).
 inline constexpr std::size_t kContourBlock = 4;
@@ -57,7 +61,22 @@ inline constexpr std::size_t kContourBlock = 4;
 // first cube holding the edge (`cube`: its lowest node, so the blocks of
 // nodes and of cubes are numbered alike). Throws alpha::Error if inside has
 // the wrong size or a border node is inside.
+//
+// split(p, q), if given, may bend the surface's segment between vertices p
+// and q (ids of points already made) on the lattice triangle holding both:
+// a point returned, strictly inside that triangle, becomes the next vertex
+// and the segment runs through it in both tetrahedra sharing the triangle
+// (a crease of the surface the lattice would cut). It is called once per
+// such segment. A tetrahedron's polygon with points so inserted is fanned
+// from the first of them (two: the crease between them is an edge), so the
+// result is still a closed, consistently oriented 2-manifold, each
+// triangle in its tetrahedron; but a fan can fold where a point is near
+// the triangle's sides or the polygon's other vertices near its nodes, so
+// that no triangles cross is then the caller's to keep (cells_mesh keeps
+// its points clear of both; tested).
+using ContourSplit = std::function<std::optional<Vec3>(Index, Index)>;
 SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& inside,
-                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex);
+                    const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex,
+                    const ContourSplit& split = {});
 
 }  // namespace alpha

@@ -13,13 +13,15 @@
 //             flat at its mouths, in its colour, every vertex's site its
 //             rank by colour. Its volume approaches its cavity's
 //             ms_volume (up to the lattice's error: both split space by
-//             the same regions).
+//             the same regions), within kCastTolerance (cast_mesh).
 //
 // Triangle size is set by `resolution`, the surface's lattice spacing in A
 // (the casts' is finer: cast_spacing).
 #pragma once
 #include <vector>
 
+#include "alpha/eroded_union.hpp"
+#include "alpha/lattice_contour.hpp"
 #include "molecule/mesh_export.hpp"
 #include "molecule/pocket_search.hpp"
 
@@ -49,6 +51,17 @@ inline constexpr double kDefaultMeshResolution = 0.7;
 inline constexpr double kCastResolution = 0.5;      // A
 inline constexpr double kFullResolutionCast = 150;  // A^3
 double cast_spacing(double resolution, double ms_volume);
+
+// The cast of a cavity (alpha::cells_mesh of its cells) at cast_spacing;
+// if its volume is more than kCastTolerance off the cavity's ms_volume,
+// again finer, by the error's square root (the lattice's error goes as the
+// spacing squared), for half the tolerance, at most twice as fine. What is
+// left of that error after the creases (cells_mesh) is mostly a cast's
+// thin wedges between its mouths and the molecular surface, which a
+// lattice misses where they are thinner than its spacing (pockets-dev:
+// bench/README, Casts against ms_volume).
+inline constexpr double kCastTolerance = 0.01;
+alpha::SurfaceMesh cast_mesh(const alpha::ErodedUnion& eu, const Cavity& cavity, double resolution);
 
 // Throws alpha::Error for a resolution that is not > 0 or a molecule too
 // large for it (more than 2^31 lattice nodes).
