@@ -155,7 +155,24 @@ TEST_CASE("ligandability: malformed models are refused", "[ligandability]") {
   short_value.replace(short_value.find(",-1]}"), 5, "]}");
   CHECK_THROWS_AS(LigandabilityModel(toy_model(short_value)), alpha::Error);
   CHECK_THROWS_AS(LigandabilityModel(toy_model(kToyTree, R"("x":[4,0],"y":[0.1,0.9])")), alpha::Error);
+  // Not a model's JSON: a key missing, text after the model, a fraction for
+  // a child, a string with an escape.
+  std::string no_scale = toy_model(kToyTree);
+  no_scale.replace(no_scale.find(R"("scale":2,)"), 10, "");
+  CHECK_THROWS_AS(LigandabilityModel(no_scale), alpha::Error);
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(kToyTree) + "}"), alpha::Error);
+  std::string fraction = kToyTree;
+  fraction.replace(fraction.find(R"("right":[2)"), 10, R"("right":[2.5)");
+  CHECK_THROWS_AS(LigandabilityModel(toy_model(fraction)), alpha::Error);
+  CHECK_THROWS_AS(LigandabilityModel(R"({"format":"a\"b",)" + toy_model(kToyTree).substr(1)), alpha::Error);
   CHECK_NOTHROW(LigandabilityModel(toy_model(kToyTree)));
+  // White space between tokens, and notes, are read over.
+  std::string spaced;
+  for (const char c : R"({"format":"a model",)" + toy_model(kToyTree).substr(1))
+    spaced += std::string(c == ',' || c == ':' || c == '[' || c == '{' ? "\n\t " : "") + c + (c == ']' ? " " : "");
+  std::vector<double> x(molecule::site_feature_names().size(), 0.0);
+  x[0] = 2;
+  CHECK(LigandabilityModel(spaced).margin(x) == 0.5 + 2 * 3);
 }
 
 TEST_CASE("ligandability: search_pockets ranks the sites by probability, or geometrically", "[ligandability]") {

@@ -30,10 +30,12 @@ from sklearn.isotonic import IsotonicRegression
 from sklearn.model_selection import GroupKFold
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MODEL = os.path.join(ROOT, "molecule", "data", "ligandability.json")
 HIT = 4.0    # A, DCC and DCA
 MERGE = 1.7  # A, residues of one ligand
 SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void that can be a site
 MIN_SITE_PROBABILITY = 0.04   # molecule::kMinSiteProbability: candidates below it are no sites
+BAG = 5                       # gradient-boosted models averaged, seeds 0..BAG-1
 CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
 CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
 RECENTERING_RADIUS = 7.0      # molecule::kRecenteringRadius (A)
@@ -192,27 +194,49 @@ def figures(structures, group, sites, log_score, centers, key, prob=None):
     return {c: [h / total for h in v] for c, v in hits.items()}, total
 
 
-def make_model(kind, seed=0):
+class Bagged:
+    """The mean margin of gradient-boosted models that differ only in their seed: one model's top site moves
+    with its seed, the mean less."""
+
+    def __init__(self, models):
+        self.models = models
+
+    def fit(self, X, y):
+        for m in self.models:
+            m.fit(X, y)
+        return self
+
+    def decision_function(self, X):
+        return np.mean([m.decision_function(X) for m in self.models], axis=0)
+
+    @property
+    def feature_importances_(self):
+        return np.mean([m.feature_importances_ for m in self.models], axis=0)
+
+
+def make_model(kind, bag=BAG):
     if kind == "gb":
-        return GradientBoostingClassifier(n_estimators=200, learning_rate=0.05, max_depth=3, subsample=0.8,
-                                          min_samples_leaf=5, random_state=seed)
+        return Bagged([GradientBoostingClassifier(n_estimators=200, learning_rate=0.05, max_depth=3, subsample=0.8,
+                                                  min_samples_leaf=5, random_state=seed) for seed in range(bag)])
     if kind == "rf":
-        return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=seed,
+        return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=0,
                                       n_jobs=2)
     raise SystemExit("unknown model kind " + kind)
 
 
 def margin(model, X):
-    if isinstance(model, GradientBoostingClassifier):
+    if isinstance(model, Bagged):
         return model.decision_function(X)
     return model.predict_proba(X)[:, 1]
 
 
 def export(model, names, iso):
-    if isinstance(model, GradientBoostingClassifier):
-        init = float(model._raw_predict_init(np.zeros((1, len(names)), dtype=np.float32))[0, 0])
-        scale = float(model.learning_rate)
-        estimators = [e[0] for e in model.estimators_]
+    if isinstance(model, Bagged):  # the same init (the prior log-odds) and learning rate in every member
+        inits = {float(m._raw_predict_init(np.zeros((1, len(names)), dtype=np.float32))[0, 0]) for m in model.models}
+        assert len(inits) == 1, inits
+        init = inits.pop()
+        scale = float(model.models[0].learning_rate) / len(model.models)
+        estimators = [e[0] for m in model.models for e in m.estimators_]
         values = [e.tree_.value[:, 0, 0] for e in estimators]
     else:
         init, scale = 0.0, 1.0 / len(model.estimators_)
@@ -224,11 +248,17 @@ def export(model, names, iso):
         trees.append({"feature": [int(f) if l >= 0 else -1 for f, l in zip(t.feature, t.children_left)],
                       "threshold": [float(x) if l >= 0 else 0.0 for x, l in zip(t.threshold, t.children_left)],
                       "left": [int(x) for x in t.children_left], "right": [int(x) for x in t.children_right],
-                      "value": [float(x) for x in v]})
-    return {"format": "alphapocket ligandability model 1", "kind": type(model).__name__,
+                      "value": [float(x) if l < 0 else 0.0 for x, l in zip(v, t.children_left)]})
+    kind = f"{len(model.models)} x GradientBoostingClassifier" if isinstance(model, Bagged) else type(model).__name__
+    return {"format": "alphapocket ligandability model 1", "kind": kind,
             "trained_on": "pockets-train", "features": names, "init": init, "scale": scale, "trees": trees,
             "calibration": {"x": [float(x) for x in iso.X_thresholds_],
                             "y": [float(y) for y in iso.y_thresholds_]}}
+
+
+def model_text(model):
+    """The model file's text: compact JSON, each float at the shortest that reads back exactly."""
+    return json.dumps(model, separators=(",", ":")) + "\n"
 
 
 def reliability(p, y, bins=(0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0001)):
@@ -244,14 +274,13 @@ def check(rebuilt, margins, probabilities, cpp):
     """0 when the rebuilt model is the committed one and alphapocket (C++, cpp: margin and probability per
     site) agrees with scikit-learn on every site; else prints what differs and returns 1."""
     problems = []
-    with open(os.path.join(ROOT, "molecule", "data", "ligandability.json")) as f:
-        committed = json.load(f)
-    rebuilt = json.loads(json.dumps(rebuilt))
-    for key in ("features", "kind", "init", "scale", "calibration"):
-        if committed.get(key) != rebuilt.get(key):
-            problems.append(f"the rebuilt model's {key} differs from molecule/data/ligandability.json")
-    if committed["trees"] != rebuilt["trees"]:
-        problems.append("the rebuilt model's trees differ from molecule/data/ligandability.json")
+    with open(MODEL) as f:
+        committed = f.read()
+    if committed != model_text(rebuilt):
+        committed, rebuilt = json.loads(committed), json.loads(model_text(rebuilt))
+        differ = [k for k in sorted(set(committed) | set(rebuilt)) if committed.get(k) != rebuilt.get(k)]
+        problems.append("the rebuilt model is not molecule/data/ligandability.json byte for byte; differing: "
+                        + (", ".join(differ) or "only the text"))
     worst = np.abs(cpp - np.column_stack([margins, probabilities])).max(axis=0)
     print(f"{len(margins)} pockets-dev sites: alphapocket vs scikit-learn, largest difference "
           f"{worst[0]:.3g} (margin), {worst[1]:.3g} (probability)")
@@ -269,6 +298,7 @@ def main():
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "training"),
                     help="features are cached here (delete it after changing alphapocket)")
     ap.add_argument("--model", default="gb", choices=["gb", "rf"])
+    ap.add_argument("--bag", type=int, default=BAG, help="gradient-boosted models averaged (seeds 0..BAG-1)")
     ap.add_argument("--label", default="dca", choices=["dca", "dcc", "both"])
     ap.add_argument("--all-cavities", action="store_true", help="fit on every cavity, not the sites only")
     ap.add_argument("--drop", default="", help="comma-separated features to leave out (for experiments)")
@@ -298,13 +328,13 @@ def main():
     oof = np.zeros(len(y))
     for tr, te in folds:
         tr = tr[fit_rows[tr]]
-        oof[te] = margin(make_model(a.model).fit(Xfit[tr], y[tr]), Xfit[te])
+        oof[te] = margin(make_model(a.model, a.bag).fit(Xfit[tr], y[tr]), Xfit[te])
     # Reliability of the calibration, itself cross-fitted (each fold mapped by the others' isotonic fit).
     oof_p = np.zeros(len(y))
     for tr, te in folds:
         oof_p[te] = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof[tr], y[tr]).predict(oof[te])
     iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
-    model = make_model(a.model).fit(Xfit[fit_rows], y[fit_rows])
+    model = make_model(a.model, a.bag).fit(Xfit[fit_rows], y[fit_rows])
     dXfit = dX.copy()
     dXfit[:, [i for i in range(len(names)) if i not in keep]] = 0
     dm = margin(model, dXfit)
@@ -343,9 +373,8 @@ def main():
         sys.exit(check(export(model, names, iso), dm[ds_], dp[ds_], dcpp[ds_]))
     if a.no_write:
         return
-    with open(os.path.join(ROOT, "molecule", "data", "ligandability.json"), "w") as f:
-        json.dump(export(model, names, iso), f, separators=(",", ":"))
-        f.write("\n")
+    with open(MODEL, "w") as f:
+        f.write(model_text(export(model, names, iso)))
     fixture = os.path.join(ROOT, "tests", "data", "ligandability", "pockets-dev.csv")
     os.makedirs(os.path.dirname(fixture), exist_ok=True)
     with open(fixture, "w") as f:

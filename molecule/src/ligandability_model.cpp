@@ -2,9 +2,10 @@
 #include "molecule/ligandability_model.hpp"
 
 #include <algorithm>
-#include <exception>
-
-#include <nlohmann/json.hpp>
+#include <charconv>
+#include <initializer_list>
+#include <string>
+#include <type_traits>
 
 #include "alpha/error.hpp"
 #include "molecule/site_features.hpp"
@@ -14,45 +15,160 @@ namespace molecule {
 // Generated at build time from molecule/data/ligandability.json.
 extern const char* const kLigandabilityModelJson;
 
-LigandabilityModel::LigandabilityModel(std::string_view text) {
-  try {
-    const nlohmann::json j = nlohmann::json::parse(text);
-    if (j.at("features").get<std::vector<std::string>>() != site_feature_names())
-      alpha::fail("ligandability model: its features are not this version's site features");
-    init_ = j.at("init").get<double>();
-    scale_ = j.at("scale").get<double>();
-    const int features = int(site_feature_names().size());
-    for (const auto& t : j.at("trees")) {
-      Tree tree{t.at("feature"), t.at("left"), t.at("right"), t.at("threshold"), t.at("value")};
-      const std::size_t n = tree.feature.size();
-      if (n == 0 || tree.left.size() != n || tree.right.size() != n || tree.threshold.size() != n ||
-          tree.value.size() != n)
-        alpha::fail("ligandability model: a tree's arrays differ in length");
-      for (std::size_t k = 0; k < n; ++k) {
-        const bool leaf = tree.left[k] < 0;
-        // Children come after their parent: every walk ends.
-        if (!leaf && (tree.feature[k] < 0 || tree.feature[k] >= features || tree.left[k] <= int(k) ||
-                      tree.right[k] <= int(k) || tree.left[k] >= int(n) || tree.right[k] >= int(n)))
-          alpha::fail("ligandability model: a tree node is out of range");
-      }
-      trees_.push_back(std::move(tree));
-    }
-    knots_x_ = j.at("calibration").at("x").get<std::vector<double>>();
-    knots_y_ = j.at("calibration").at("y").get<std::vector<double>>();
-    if (knots_x_.empty() || knots_x_.size() != knots_y_.size() || !std::is_sorted(knots_x_.begin(), knots_x_.end()))
-      alpha::fail("ligandability model: the calibration's knots are not sorted pairs");
-  } catch (const nlohmann::json::exception& e) {
-    alpha::fail(std::string("ligandability model: ") + e.what());
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { alpha::fail("ligandability model: " + what); }
+
+// Reads the JSON a model file is: objects, arrays, strings without escapes
+// and numbers. Not nlohmann's parser: its document of a bagged model's
+// 1000 trees cost 7 % of a run's instructions.
+class Reader {
+public:
+  explicit Reader(std::string_view text) : text_(text) {}
+
+  // Whether the next character after white space is c (then consumed).
+  bool accept(char c) {
+    skip_space();
+    if (at_ == text_.size() || text_[at_] != c) return false;
+    ++at_;
+    return true;
   }
+  void expect(char c) {
+    if (!accept(c)) fail(std::string("expected '") + c + "' at byte " + std::to_string(at_));
+  }
+  void finish() {
+    skip_space();
+    if (at_ != text_.size()) fail("text after the model at byte " + std::to_string(at_));
+  }
+
+  std::string_view string() {
+    expect('"');
+    const std::size_t start = at_;
+    at_ = text_.find_first_of("\"\\", at_);
+    if (at_ == std::string_view::npos || text_[at_] != '"') fail("a string is not closed or has an escape");
+    return text_.substr(start, at_++ - start);
+  }
+  template <class T>
+  T value() {
+    if constexpr (std::is_same_v<T, std::string>) {
+      return std::string(string());
+    } else {
+      skip_space();
+      T x{};
+      const auto [end, error] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), x);
+      if (error != std::errc()) fail("expected a number at byte " + std::to_string(at_));
+      at_ = end - text_.data();
+      return x;
+    }
+  }
+  // An array into `out` (cleared first: a buffer reused).
+  template <class T>
+  void array(std::vector<T>& out) {
+    out.clear();
+    expect('[');
+    if (accept(']')) return;
+    do out.push_back(value<T>());
+    while (accept(','));
+    expect(']');
+  }
+  // Calls read(key) with the reader at each key's value; fails unless all
+  // of `required` were there.
+  template <class Read>
+  void object(std::initializer_list<std::string_view> required, Read&& read) {
+    unsigned seen = 0;
+    expect('{');
+    if (!accept('}')) {
+      do {
+        const std::string_view key = string();
+        expect(':');
+        const auto known = std::find(required.begin(), required.end(), key);
+        if (known != required.end()) seen |= 1u << (known - required.begin());
+        read(key);
+      } while (accept(','));
+      expect('}');
+    }
+    for (std::size_t k = 0; k < required.size(); ++k)
+      if (!(seen >> k & 1)) fail("no \"" + std::string(required.begin()[k]) + "\"");
+  }
+
+private:
+  void skip_space() {
+    while (at_ < text_.size() && (text_[at_] == ' ' || text_[at_] == '\n' || text_[at_] == '\r' || text_[at_] == '\t'))
+      ++at_;
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace
+
+LigandabilityModel::LigandabilityModel(std::string_view text) {
+  Reader in(text);
+  const int features = int(site_feature_names().size());
+  std::vector<int> feature, left, right;
+  std::vector<double> threshold, value;
+  const auto read_tree = [&] {
+    in.object({"feature", "left", "right", "threshold", "value"}, [&](std::string_view key) {
+      if (key == "feature") in.array(feature);
+      else if (key == "left") in.array(left);
+      else if (key == "right") in.array(right);
+      else if (key == "threshold") in.array(threshold);
+      else if (key == "value") in.array(value);
+      else fail("a tree has \"" + std::string(key) + "\"");
+    });
+    const std::size_t n = feature.size();
+    if (n == 0 || left.size() != n || right.size() != n || threshold.size() != n || value.size() != n)
+      fail("a tree's arrays differ in length");
+    roots_.push_back(nodes_.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      // Children come after their parent: every walk ends.
+      if (left[k] >= 0 && (feature[k] < 0 || feature[k] >= features || left[k] <= int(k) || right[k] <= int(k) ||
+                           left[k] >= int(n) || right[k] >= int(n)))
+        fail("a tree node is out of range");
+      nodes_.push_back({feature[k], left[k], right[k], threshold[k], value[k]});
+    }
+  };
+  in.object({"features", "init", "scale", "trees", "calibration"}, [&](std::string_view key) {
+    if (key == "features") {
+      std::vector<std::string> names;
+      in.array(names);
+      if (names != site_feature_names()) fail("its features are not this version's site features");
+    } else if (key == "init") {
+      init_ = in.value<double>();
+    } else if (key == "scale") {
+      scale_ = in.value<double>();
+    } else if (key == "trees") {
+      in.expect('[');
+      if (!in.accept(']')) {
+        do read_tree();
+        while (in.accept(','));
+        in.expect(']');
+      }
+    } else if (key == "calibration") {
+      in.object({"x", "y"}, [&](std::string_view k) {
+        if (k == "x") in.array(knots_x_);
+        else if (k == "y") in.array(knots_y_);
+        else fail("the calibration has \"" + std::string(k) + "\"");
+      });
+    } else {
+      in.string();  // format, kind, trained_on: notes
+    }
+  });
+  in.finish();
+  if (knots_x_.empty() || knots_x_.size() != knots_y_.size() || !std::is_sorted(knots_x_.begin(), knots_x_.end()))
+    fail("the calibration's knots are not sorted pairs");
 }
 
 double LigandabilityModel::margin(const std::vector<double>& features) const {
-  if (features.size() != site_feature_names().size()) alpha::fail("ligandability model: wrong number of features");
+  if (features.size() != site_feature_names().size()) fail("wrong number of features");
   double sum = 0;
-  for (const Tree& t : trees_) {
+  for (const std::size_t root : roots_) {
+    const Node* tree = &nodes_[root];
     int k = 0;
-    while (t.left[k] >= 0) k = double(float(features[t.feature[k]])) <= t.threshold[k] ? t.left[k] : t.right[k];
-    sum += t.value[k];
+    while (tree[k].left >= 0)
+      k = double(float(features[tree[k].feature])) <= tree[k].threshold ? tree[k].left : tree[k].right;
+    sum += tree[k].value;
   }
   return init_ + scale_ * sum;
 }

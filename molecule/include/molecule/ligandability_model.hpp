@@ -8,6 +8,7 @@
 // (training/ writes it; format in training/README.md); the default one,
 // molecule/data/ligandability.json, is compiled into the binary.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,11 +31,12 @@ public:
   double probability(double margin) const;
 
 private:
-  struct Tree {
-    std::vector<int> feature, left, right;  // left/right -1: a leaf
-    std::vector<double> threshold, value;
+  struct Node {
+    int feature, left, right;  // left -1: a leaf; children indexed within the tree
+    double threshold, value;
   };
-  std::vector<Tree> trees_;
+  std::vector<Node> nodes_;        // all trees' nodes, tree by tree
+  std::vector<std::size_t> roots_;  // where each tree starts in nodes_
   double init_ = 0, scale_ = 1;
   std::vector<double> knots_x_, knots_y_;
 };
