@@ -22,14 +22,25 @@ constexpr double kOrientBound = 4.7e-15;
 // over 4 terms this is below 432u mx my mz mh = 4.8e-14 mx my mz mh.
 constexpr double kPowerBound = 5.0e-14;
 
-// Returns the sign, or 2 when the filter cannot decide.
+// Two doubles in one register (SSE2, NEON): GCC and Clang vector extensions.
+using Pair = double __attribute__((vector_size(16)));
+using PairBits = long long __attribute__((vector_size(16)));
+inline Pair abs2(Pair a) { return (Pair)((PairBits)a & PairBits{0x7fffffffffffffffLL, 0x7fffffffffffffffLL}); }
+inline Pair max2(Pair a, Pair b) { return a > b ? a : b; }
+inline double larger_lane(Pair a) { return std::max(a[0], a[1]); }
+
+// Returns the sign, or 2 when the filter cannot decide. The x and y columns
+// side by side in pairs, each value the expression written out would round.
 int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-  const double wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
-  const double det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
-  const double mx = std::max({std::fabs(ux), std::fabs(vx), std::fabs(wx)});
-  const double my = std::max({std::fabs(uy), std::fabs(vy), std::fabs(wy)});
+  const Pair axy{a.x, a.y};
+  const Pair u = Pair{b.x, b.y} - axy, v = Pair{c.x, c.y} - axy, w = Pair{d.x, d.y} - axy;
+  const double uz = b.z - a.z, vz = c.z - a.z, wz = d.z - a.z;
+  // (vx wz - vz wx, vy wz - vz wy), then ux (vy wz - vz wy) - uy (vx wz - vz wx) + uz (vx wy - vy wx).
+  const Pair t = v * wz - vz * w;
+  const Pair terms = u * __builtin_shufflevector(t, t, 1, 0);
+  const double det = terms[0] - terms[1] + uz * (v[0] * w[1] - v[1] * w[0]);
+  const Pair mxy = max2(max2(abs2(u), abs2(v)), abs2(w));
+  const double mx = mxy[0], my = mxy[1];
   const double mz = std::max({std::fabs(uz), std::fabs(vz), std::fabs(wz)});
   if (!in_filter_range(std::min({mx, my, mz})) || !in_filter_range(std::max({mx, my, mz}))) return 2;
   const double eps = kOrientBound * mx * my * mz;
@@ -38,31 +49,39 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   return 2;
 }
 
-// Written out row by row: this is the hottest function of the construction,
-// and the unweighted instance drops the weight terms at compile time.
+// The hottest function of the construction: rows 0,1 and rows 2,3 side by
+// side in pairs (half the instructions of one row at a time), every value
+// the same expression as one row at a time would round (so the bound below
+// holds as derived); the unweighted instance drops the weight terms at
+// compile time.
 template <bool kWeighted>
 [[gnu::always_inline]] inline int filtered_power_det(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3,
                                                     const double w[4], const Vec3& p, double wp) {
-  auto dw = [&](int i) { return kWeighted ? w[i] - wp : 0.0; };
-  const double x0 = q0.x - p.x, y0 = q0.y - p.y, z0 = q0.z - p.z, d0 = dw(0);
-  const double x1 = q1.x - p.x, y1 = q1.y - p.y, z1 = q1.z - p.z, d1 = dw(1);
-  const double x2 = q2.x - p.x, y2 = q2.y - p.y, z2 = q2.z - p.z, d2 = dw(2);
-  const double x3 = q3.x - p.x, y3 = q3.y - p.y, z3 = q3.z - p.z, d3 = dw(3);
-  const double s0 = x0 * x0 + y0 * y0 + z0 * z0, s1 = x1 * x1 + y1 * y1 + z1 * z1;
-  const double s2 = x2 * x2 + y2 * y2 + z2 * z2, s3 = x3 * x3 + y3 * y3 + z3 * z3;
-  const double h0 = s0 - d0, h1 = s1 - d1, h2 = s2 - d2, h3 = s3 - d3;
-  // 2x2 minors of the xy columns, then 3x3 minors with z, then along h.
-  const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
-  const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
+  const Pair x01 = Pair{q0.x, q1.x} - p.x, x23 = Pair{q2.x, q3.x} - p.x;
+  const Pair y01 = Pair{q0.y, q1.y} - p.y, y23 = Pair{q2.y, q3.y} - p.y;
+  const Pair z01 = Pair{q0.z, q1.z} - p.z, z23 = Pair{q2.z, q3.z} - p.z;
+  const Pair s01 = x01 * x01 + y01 * y01 + z01 * z01, s23 = x23 * x23 + y23 * y23 + z23 * z23;
+  // Lifted values h = |q - p|^2 - (w - wp).
+  const Pair d01 = kWeighted ? Pair{w[0], w[1]} - wp : Pair{0, 0};
+  const Pair d23 = kWeighted ? Pair{w[2], w[3]} - wp : Pair{0, 0};
+  const Pair h01 = s01 - d01, h23 = s23 - d23;
+  // 2x2 minors of the xy columns: m_ij = x_i y_j - x_j y_i.
+  const Pair x32 = __builtin_shufflevector(x23, x23, 1, 0), y32 = __builtin_shufflevector(y23, y23, 1, 0);
+  const Pair x02 = __builtin_shufflevector(x01, x23, 0, 2), x13 = __builtin_shufflevector(x01, x23, 1, 3);
+  const Pair y02 = __builtin_shufflevector(y01, y23, 0, 2), y13 = __builtin_shufflevector(y01, y23, 1, 3);
+  const Pair m02_13 = x01 * y23 - x23 * y01, m03_12 = x01 * y32 - x32 * y01, m01_23 = x02 * y13 - x13 * y02;
+  const double m01 = m01_23[0], m23 = m01_23[1], m02 = m02_13[0], m13 = m02_13[1], m03 = m03_12[0], m12 = m03_12[1];
+  const double z0 = z01[0], z1 = z01[1], z2 = z23[0], z3 = z23[1];
+  // 3x3 minors with z, then along h.
   const double m012 = z0 * m12 - z1 * m02 + z2 * m01;
   const double m013 = z0 * m13 - z1 * m03 + z3 * m01;
   const double m023 = z0 * m23 - z2 * m03 + z3 * m02;
   const double m123 = z1 * m23 - z2 * m13 + z3 * m12;
-  const double det = (h3 * m012 - h2 * m013) + (h1 * m023 - h0 * m123);
-  const double mx = std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(x2), std::fabs(x3)));
-  const double my = std::max(std::max(std::fabs(y0), std::fabs(y1)), std::max(std::fabs(y2), std::fabs(y3)));
-  const double mz = std::max(std::max(std::fabs(z0), std::fabs(z1)), std::max(std::fabs(z2), std::fabs(z3)));
-  const double mh = std::max(std::max(s0 + std::fabs(d0), s1 + std::fabs(d1)), std::max(s2 + std::fabs(d2), s3 + std::fabs(d3)));
+  const double det = (h23[1] * m012 - h23[0] * m013) + (h01[1] * m023 - h01[0] * m123);
+  const double mx = larger_lane(max2(abs2(x01), abs2(x23)));
+  const double my = larger_lane(max2(abs2(y01), abs2(y23)));
+  const double mz = larger_lane(max2(abs2(z01), abs2(z23)));
+  const double mh = kWeighted ? larger_lane(max2(s01 + abs2(d01), s23 + abs2(d23))) : larger_lane(max2(s01, s23));
   // mh >= mx^2, my^2, mz^2: its upper limit bounds them too.
   if (!in_filter_range(std::min({mx, my, mz, mh})) || !(mh < 1e60)) return 2;
   const double eps = kPowerBound * mx * my * mz * mh;
@@ -147,16 +166,24 @@ bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[
 }
 
 // The hottest predicate: the filter reads the points in place, and the arrays
-// the exact stage takes are built only when it cannot decide.
+// the exact stage takes are built only when it cannot decide (out of line, so
+// that the filter's path does not prepare them).
 bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
-  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
-  const int s = w_ ? filtered_power_det<true>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], weight(p))
-                   : filtered_power_det<false>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], 0.0);
-  if (s != 2) {
-    ++stats_.power.filtered;
-    return s < 0;
+  int s;
+  if (w_) {
+    const double wq[4] = {w_[a], w_[b], w_[c], w_[d]};
+    s = filtered_power_det<true>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], w_[p]);
+  } else {
+    s = filtered_power_det<false>(pts_[a], pts_[b], pts_[c], pts_[d], nullptr, pts_[p], 0.0);
   }
+  if (s == 2) return exact_power_conflict(a, b, c, d, p);
+  ++stats_.power.filtered;
+  return s < 0;
+}
+
+bool Kernel::exact_power_conflict(Index a, Index b, Index c, Index d, Index p) {
   const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
+  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
   const Index id[4] = {a, b, c, d};
   return exact_conflict(q, wq, id, p);
 }

@@ -86,6 +86,7 @@ private:
   bool cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   // Its exact and perturbed stages, when the filter cannot decide.
   bool exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
+  [[gnu::noinline]] bool exact_power_conflict(Index a, Index b, Index c, Index d, Index p);
   template <class OrientWithP>
   bool perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p);
 };
