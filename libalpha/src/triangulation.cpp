@@ -126,17 +126,21 @@ private:
     Index outside;           // the neighbour that stays
     int mirror;              // its local index of the conflict cell
   };
-  struct EdgeSlot {  // cavity edge table entry; key 0: empty
+  struct EdgeSlot {  // cavity edge table entry; empty unless stamp is this insertion's
     std::uint64_t key;
     Index cell;
+    std::uint32_t stamp;
     int facet;
   };
   static constexpr std::uint64_t kUsedEdge = ~0ull;
-  // kOthers[i][j]: the two local indices other than i and j.
-  static constexpr int kOthers[4][4][2] = {{{-1, -1}, {2, 3}, {1, 3}, {1, 2}},
-                                           {{2, 3}, {-1, -1}, {0, 3}, {0, 2}},
-                                           {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
-                                           {{1, 2}, {0, 2}, {0, 1}, {-1, -1}}};
+  // kSideFacets[i]: for a new cell whose vertex i is p, each facet j != i
+  // with the local indices of the boundary edge it holds (the two other than i and j).
+  static constexpr std::array<std::array<std::array<int, 3>, 3>, 4> kSideFacets{{
+      {{{1, 2, 3}, {2, 1, 3}, {3, 1, 2}}},
+      {{{0, 2, 3}, {2, 0, 3}, {3, 0, 2}}},
+      {{{0, 1, 3}, {1, 0, 3}, {3, 0, 1}}},
+      {{{0, 1, 2}, {1, 0, 2}, {2, 0, 1}}},
+  }};
 
   Triangulation& t_;
   std::vector<Index> input_;    // input index of each vertex id
@@ -149,7 +153,6 @@ private:
   std::vector<Index> free_cells_, conflict_, stack_;
   std::vector<Facet> boundary_;
   std::vector<EdgeSlot> edges_;
-  std::vector<std::size_t> used_slots_;
   std::vector<std::uint32_t> vertex_mark_;
   std::vector<Index> cavity_vertices_;
   std::uint32_t walk_rng_ = 0x9e3779b9u;
@@ -309,9 +312,8 @@ private:
   Index fill_cavity() {
     for (Index c : conflict_) free_cells_.push_back(c);
     const std::size_t slots = std::bit_ceil(4 * boundary_.size() + 16);
-    if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0});
+    if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0, 0});
     const std::size_t mask = edges_.size() - 1;
-    used_slots_.clear();
     Index made = kNone;
     for (const Facet& f : boundary_) {
       Index c;
@@ -331,25 +333,22 @@ private:
       cells_[f.outside].n[f.mirror] = c;
       // The other three facets contain p and one edge of the boundary facet;
       // the cell sharing that edge is the neighbour.
-      for (int j = 0; j < 4; ++j) {
-        if (j == f.i) continue;
-        const Index a = f.v[kOthers[f.i][j][0]], b = f.v[kOthers[f.i][j][1]];
-        const std::uint64_t key = a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+      for (const auto& [j, ka, kb] : kSideFacets[f.i]) {
+        const Index a = f.v[ka], b = f.v[kb];
+        const std::uint64_t key = std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
         std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 40 & mask;
-        while (edges_[h].key != 0 && edges_[h].key != key) h = (h + 1) & mask;
+        while (edges_[h].stamp == stamp_ && edges_[h].key != key) h = (h + 1) & mask;
         EdgeSlot& slot = edges_[h];
-        if (slot.key == key) {
+        if (slot.stamp == stamp_) {
           cells_[c].n[j] = slot.cell;
           cells_[slot.cell].n[slot.facet] = c;
           slot.key = kUsedEdge;  // each edge is shared by exactly two new cells
         } else {
-          slot = {key, c, j};
-          used_slots_.push_back(h);
+          slot = {key, c, stamp_, j};
         }
       }
       made = c;
     }
-    for (std::size_t h : used_slots_) edges_[h].key = 0;
     return made;
   }
 
