@@ -23,29 +23,35 @@ struct SplitMix64 {
   }
 };
 
+// Bits 0..15 of v moved to bits 0, 3, 6, ..., 45 (the others zero).
+std::uint64_t spread_by_three(std::uint64_t v) {
+  v = (v | v << 32) & 0x1f00000000ffffull;
+  v = (v | v << 16) & 0x1f0000ff0000ffull;
+  v = (v | v << 8) & 0x100f00f00f00f00full;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+
 // Skilling's transform ("Programming the Hilbert curve", 2004) from axes to
-// the transposed Hilbert index, then interleaved into one key.
+// the transposed Hilbert index, then interleaved into one key (bit b of
+// axis i at 3b + 2 - i). Without branches: each one depends on a coordinate
+// bit, which the processor cannot predict.
 std::uint64_t hilbert_key(std::uint32_t x[3]) {
   for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
     const std::uint32_t p = q - 1;
     for (int i = 0; i < 3; ++i) {
-      if (x[i] & q) {
-        x[0] ^= p;
-      } else {
-        const std::uint32_t t = (x[0] ^ x[i]) & p;
-        x[0] ^= t, x[i] ^= t;
-      }
+      // bit q of x[i] set: invert the low bits of x[0]; else exchange them with x[i]'s.
+      const std::uint32_t set = 0u - std::uint32_t((x[i] & q) != 0);
+      const std::uint32_t t = (x[0] ^ x[i]) & p & ~set;
+      x[0] ^= (p & set) ^ t, x[i] ^= t;
     }
   }
   x[1] ^= x[0], x[2] ^= x[1];
   std::uint32_t t = 0;
-  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1)
-    if (x[2] & q) t ^= q - 1;
+  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) t ^= (q - 1) & (0u - std::uint32_t((x[2] & q) != 0));
   for (int i = 0; i < 3; ++i) x[i] ^= t;
-  std::uint64_t key = 0;
-  for (int b = kBits - 1; b >= 0; --b)
-    for (int i = 0; i < 3; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
-  return key;
+  return spread_by_three(x[0]) << 2 | spread_by_three(x[1]) << 1 | spread_by_three(x[2]);
 }
 
 }  // namespace
