@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <tuple>
 
 #include <cmath>
 #include <numeric>
@@ -157,34 +156,41 @@ private:
   std::vector<Index> cavity_vertices_;
   std::uint32_t walk_rng_ = 0x9e3779b9u;
 
+  // Groups equal points through a hash table of their coordinates (no sort:
+  // its comparisons are unpredictable branches and scattered reads). Returns
+  // the representatives in increasing order.
   std::vector<Index> merge_duplicates() {
     const auto& pts = t_.points_;
     const std::size_t n = pts.size();
-    std::vector<Index> idx(n);
-    std::iota(idx.begin(), idx.end(), 0);
-    auto lex = [&](Index a, Index b) {
-      const Vec3 &p = pts[a], &q = pts[b];
-      return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    const int bits = std::bit_width(2 * n + 1);  // at most half full
+    const std::size_t mask = (std::size_t(1) << bits) - 1;
+    auto hash = [&](const Vec3& p) {
+      // + 0.0 turns -0.0 into 0.0, which compares equal to it.
+      std::uint64_t h = std::bit_cast<std::uint64_t>(p.x + 0.0);
+      h = (h ^ std::bit_cast<std::uint64_t>(p.y + 0.0)) * 0x9e3779b97f4a7c15ull;
+      h = (h ^ std::bit_cast<std::uint64_t>(p.z + 0.0)) * 0xbf58476d1ce4e5b9ull;
+      return std::size_t(h >> (64 - bits));
     };
-    std::sort(idx.begin(), idx.end(), [&](Index a, Index b) { return lex(a, b) || (!lex(b, a) && a < b); });
-    t_.status_.assign(n, PointStatus::vertex);
-    t_.representative_.resize(n);
-    std::vector<Index> reps;
-    for (std::size_t b = 0; b < n;) {
-      std::size_t e = b + 1;
-      while (e < n && pts[idx[e]] == pts[idx[b]]) ++e;
-      Index rep = idx[b];
-      for (std::size_t k = b + 1; k < e; ++k)
-        if (t_.weight(idx[k]) > t_.weight(rep)) rep = idx[k];
-      for (std::size_t k = b; k < e; ++k) {
-        t_.representative_[idx[k]] = rep;
-        if (idx[k] != rep) t_.status_[idx[k]] = PointStatus::duplicate;
-      }
-      t_.num_duplicates_ += e - b - 1;
-      reps.push_back(rep);
-      b = e;
+    std::vector<Index> table(mask + 1, kNone);  // slot -> the first point of its coordinates
+    auto& rep = t_.representative_;
+    rep.resize(n);
+    std::vector<Index> first(n);
+    for (Index i = 0; i < n; ++i) {
+      std::size_t h = hash(pts[i]);
+      while (table[h] != kNone && pts[table[h]] != pts[i]) h = (h + 1) & mask;
+      if (table[h] == kNone) table[h] = i, rep[i] = i;
+      first[i] = table[h];
+      // The largest weight, then the smallest index, represents the group.
+      Index& best = rep[first[i]];
+      if (t_.weight(i) > t_.weight(best)) best = i;
     }
-    std::sort(reps.begin(), reps.end());
+    t_.status_.assign(n, PointStatus::vertex);
+    std::vector<Index> reps;
+    for (Index i = 0; i < n; ++i) {
+      rep[i] = rep[first[i]];  // first[i] <= i: already final
+      if (rep[i] != i) t_.status_[i] = PointStatus::duplicate, ++t_.num_duplicates_;
+      else reps.push_back(i);
+    }
     return reps;
   }
 
