@@ -56,6 +56,14 @@ struct Circle {
   Vec3 ray(const Vec3& radial, double psi) const { return ray(radial, std::cos(psi), std::sin(psi)); }
   Vec3 ray(const Vec3& radial, double cos_psi, double sin_psi) const { return -cos_psi * radial + sin_psi * w; }
   double angle(const Vec3& v) const { return wrap(std::atan2(dot(v, e2), dot(v, e1))); }
+  // The squared distance from a point to the circle's nearest point, given
+  // the point's distance s from the axis and z from the plane.
+  double squared_distance(double s, double z) const { return (s - rho) * (s - rho) + z * z; }
+  double squared_distance(const Vec3& x) const {
+    const Vec3 y = x - o;
+    const double z = dot(y, w);
+    return squared_distance(norm(y - z * w), z);
+  }
 };
 
 // A point of F found nearer to x than t: on a sphere (the nearest point
@@ -412,7 +420,7 @@ public:
       if (std::fabs(z) >= best.distance) continue;
       const Vec3 perp = y - z * c.w;
       const double s = std::sqrt(dot(perp, perp));
-      const double dist = std::sqrt((s - c.rho) * (s - c.rho) + z * z);
+      const double dist = std::sqrt(c.squared_distance(s, z));
       if (dist >= best.distance) continue;
       const double px = s > 0 ? dot(perp, c.e1) / s : eu_.arc_ends_[eu_.arc_start_[e]].cos_begin;
       const double py = s > 0 ? dot(perp, c.e2) / s : eu_.arc_ends_[eu_.arc_start_[e]].sin_begin;
@@ -613,7 +621,7 @@ private:
     const double a = dot(perp, c.e1), b = dot(perp, c.e2);
     const double s = std::sqrt(a * a + b * b);
     // The circle's point nearest to x, when on an arc (or x on the axis: all are).
-    if (s <= tol_ || contains(set, ends, a, b)) return (s - c.rho) * (s - c.rho) + z * z < radius * radius;
+    if (s <= tol_ || contains(set, ends, a, b)) return c.squared_distance(s, z) < radius * radius;
     // Else an arc's end.
     for (std::size_t k = 0; k < set.size(); ++k)
       for (const auto& [cs, sn] : {std::pair{ends[k].cos_begin, ends[k].sin_begin}, {ends[k].cos_end, ends[k].sin_end}}) {
@@ -627,9 +635,7 @@ private:
   // radius - r of x: through a point of its arcs nearer than r to that
   // point, or, for a circle smaller than r, through its axis.
   bool circle_near(Index e, const Circle& c, const Vec3& x, double radius) const {
-    const Vec3 y = x - c.o;
-    const double z = dot(y, c.w), s = norm(y - z * c.w);
-    return (s - c.rho) * (s - c.rho) + z * z < radius * radius && (c.rho < r_ + tol_ || near_arcs(e, c, x, radius));
+    return c.squared_distance(x) < radius * radius && (c.rho < r_ + tol_ || near_arcs(e, c, x, radius));
   }
 
   // Whether a point within `reach` of x can be inside ball b.
@@ -875,7 +881,7 @@ private:
     if (std::fabs(z) >= limit) return false;
     const Vec3 perp = y - z * c.w;
     const double s = std::sqrt(dot(perp, perp));
-    if ((s - c.rho) * (s - c.rho) + z * z >= limit_sq) return false;
+    if (c.squared_distance(s, z) >= limit_sq) return false;
     // On the axis: all its points equally near.
     return s <= tol_ || contains(edge_arcs(e), eu_.arc_ends_.data() + eu_.arc_start_[e], dot(perp, c.e1), dot(perp, c.e2));
   }
@@ -956,14 +962,7 @@ private:
       if (den > 0) t = dot(q - p, q - p) / den;
     } else if (nearer.kind == Nearer::kCircle) {  // distance to the circle - t decreases along the ray
       const Circle& c = h.circles[nearer.which].second;
-      double lo = 0;
-      t = hi;
-      while (t - lo > kCutPrecision * r_) {
-        const double mid = (lo + t) / 2;
-        const Vec3 y = q + mid * u - c.o;
-        const double z = dot(y, c.w), s = norm(y - z * c.w);
-        ((s - c.rho) * (s - c.rho) + z * z >= mid * mid ? lo : t) = mid;
-      }
+      t = reach_end([&](double m) { return c.squared_distance(q + m * u); }, 0, 0, hi, kCutPrecision * r_);
     }
     return t < hi ? t : -1;
   }
@@ -1037,6 +1036,19 @@ private:
     return lo;
   }
 
+  // Where, to `precision`, on the ray q + t u in [lo, hi] a point of F
+  // (`squared_distance` to q + t u) comes nearer than t - shift: the end of
+  // the initial segment where it is not (its distance less t only decreases
+  // along the ray).
+  template <class SquaredDistance>
+  static double reach_end(const SquaredDistance& squared_distance, double shift, double lo, double hi, double precision) {
+    while (hi - lo > precision) {
+      const double mid = (lo + hi) / 2;
+      (squared_distance(mid) >= (mid - shift) * (mid - shift) ? lo : hi) = mid;
+    }
+    return hi;
+  }
+
   // Whether h holds a vertex of smaller index at vertex `self`'s point
   // (clear()'s test of those is rounding noise along a ray from there).
   bool coincident(const Hood& h, std::size_t self) const {
@@ -1053,26 +1065,15 @@ private:
   // (t - tol)^2, which only decreases along the ray (the distance less t
   // does); else -1.
   double found_from(const Hood& h, const Nearer& nearer, const Vec3& q, const Vec3& u, double lo, double hi) const {
-    const auto margin = [&](double t) {
-      const Vec3 x = q + t * u;
-      double dd;
-      if (nearer.kind == Nearer::kVertex) {
-        const Vec3 d = x - eu_.vertices_[h.vertices[nearer.which]].p;
-        dd = dot(d, d);
-      } else {
-        const Circle& c = h.circles[nearer.which].second;
-        const Vec3 y = x - c.o;
-        const double z = dot(y, c.w), s = norm(y - z * c.w);
-        dd = (s - c.rho) * (s - c.rho) + z * z;
-      }
-      return dd - (t - tol_) * (t - tol_);
-    };
     if (nearer.kind != Nearer::kVertex && nearer.kind != Nearer::kCircle) return -1;
-    double a = lo, t = hi;
-    while (t - a > 1e-3 * kBracket * r_) {
-      const double mid = (a + t) / 2;
-      (margin(mid) >= 0 ? a : t) = mid;
-    }
+    const auto squared_distance = [&](double t) {
+      const Vec3 x = q + t * u;
+      if (nearer.kind == Nearer::kCircle) return h.circles[nearer.which].second.squared_distance(x);
+      const Vec3 d = x - eu_.vertices_[h.vertices[nearer.which]].p;
+      return dot(d, d);
+    };
+    const auto margin = [&](double t) { return squared_distance(t) - (t - tol_) * (t - tol_); };
+    const double t = reach_end(squared_distance, tol_, lo, hi, 1e-3 * kBracket * r_);
     const double d = kBracket * r_, sure = 1e-12 * r_ * r_;
     return t - d > lo + kCutPrecision * r_ && t + d < hi && margin(t - d) > sure && margin(t + d) < -sure ? t : -1;
   }
