@@ -133,12 +133,14 @@ private:
   };
   static constexpr std::uint64_t kUsedEdge = ~0ull;
   // kSideFacets[i]: for a new cell whose vertex i is p, each facet j != i
-  // with the local indices of the boundary edge it holds (the two other than i and j).
+  // with the local indices a, b of the boundary edge it holds, in the order
+  // (i, a, b) that kFacet[j] lists them cyclically. The new cell across that
+  // facet sees it from the other side: it lists the same edge as (b, a).
   static constexpr std::array<std::array<std::array<int, 3>, 3>, 4> kSideFacets{{
-      {{{1, 2, 3}, {2, 1, 3}, {3, 1, 2}}},
-      {{{0, 2, 3}, {2, 0, 3}, {3, 0, 2}}},
-      {{{0, 1, 3}, {1, 0, 3}, {3, 0, 1}}},
-      {{{0, 1, 2}, {1, 0, 2}, {2, 0, 1}}},
+      {{{1, 2, 3}, {2, 3, 1}, {3, 1, 2}}},
+      {{{0, 3, 2}, {2, 0, 3}, {3, 2, 0}}},
+      {{{0, 1, 3}, {1, 3, 0}, {3, 0, 1}}},
+      {{{0, 2, 1}, {1, 0, 2}, {2, 1, 0}}},
   }};
 
   Triangulation& t_;
@@ -353,18 +355,20 @@ private:
       cells[f.outside].n[f.mirror] = c;
       // The other three facets contain p and one edge of the boundary facet;
       // the cell sharing that edge is the neighbour.
+      // Edges are keyed by direction (no unpredictable min/max), hashed
+      // symmetrically: a looks for the b -> a its neighbour left, in the same chain.
       for (const auto& [j, ka, kb] : kSideFacets[f.i]) {
         const Index a = f.v[ka], b = f.v[kb];
-        const std::uint64_t key = std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-        std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 40 & mask;
-        while (edges[h].stamp == stamp && edges[h].key != key) h = (h + 1) & mask;
+        const std::uint64_t wanted = std::uint64_t(b) << 32 | a;
+        std::size_t h = ((std::uint64_t(a) + b) * 0x9e3779b97f4a7c15ull) >> 40 & mask;
+        while (edges[h].stamp == stamp && edges[h].key != wanted) h = (h + 1) & mask;
         EdgeSlot& slot = edges[h];
         if (slot.stamp == stamp) {
           cell.n[j] = slot.cell;
           cells[slot.cell].n[slot.facet] = c;
           slot.key = kUsedEdge;  // each edge is shared by exactly two new cells
         } else {
-          slot = {key, c, stamp, j};
+          slot = {std::uint64_t(a) << 32 | b, c, stamp, j};
         }
       }
       made = c;
