@@ -27,6 +27,8 @@ using Pair = double __attribute__((vector_size(16)));
 using PairBits = long long __attribute__((vector_size(16)));
 inline Pair abs2(Pair a) { return (Pair)((PairBits)a & PairBits{0x7fffffffffffffffLL, 0x7fffffffffffffffLL}); }
 inline Pair max2(Pair a, Pair b) { return a > b ? a : b; }
+inline Pair low2(Pair a) { return __builtin_shufflevector(a, a, 0, 0); }  // both lanes the low one
+inline Pair high2(Pair a) { return __builtin_shufflevector(a, a, 1, 1); }
 
 // Returns the sign, or 2 when the filter cannot decide. The x and y columns
 // side by side in pairs, each value the expression written out would round.
@@ -69,14 +71,17 @@ template <bool kWeighted>
   const Pair x02 = __builtin_shufflevector(x01, x23, 0, 2), x13 = __builtin_shufflevector(x01, x23, 1, 3);
   const Pair y02 = __builtin_shufflevector(y01, y23, 0, 2), y13 = __builtin_shufflevector(y01, y23, 1, 3);
   const Pair m02_13 = x01 * y23 - x23 * y01, m03_12 = x01 * y32 - x32 * y01, m01_23 = x02 * y13 - x13 * y02;
-  const double m01 = m01_23[0], m23 = m01_23[1], m02 = m02_13[0], m13 = m02_13[1], m03 = m03_12[0], m12 = m03_12[1];
-  const double z0 = z01[0], z1 = z01[1], z2 = z23[0], z3 = z23[1];
-  // 3x3 minors with z, then along h.
-  const double m012 = z0 * m12 - z1 * m02 + z2 * m01;
-  const double m013 = z0 * m13 - z1 * m03 + z3 * m01;
-  const double m023 = z0 * m23 - z2 * m03 + z3 * m02;
-  const double m123 = z1 * m23 - z2 * m13 + z3 * m12;
-  const double det = (h23[1] * m012 - h23[0] * m013) + (h01[1] * m023 - h01[0] * m123);
+  // 3x3 minors with z, in pairs: m012 = z0 m12 - z1 m02 + z2 m01 beside
+  // m013 = z0 m13 - z1 m03 + z3 m01, m023 = z0 m23 - z2 m03 + z3 m02 beside
+  // m123 = z1 m23 - z2 m13 + z3 m12.
+  const Pair m12_13 = __builtin_shufflevector(m03_12, m02_13, 1, 3), m02_03 = __builtin_shufflevector(m02_13, m03_12, 0, 2);
+  const Pair m03_13 = __builtin_shufflevector(m03_12, m02_13, 0, 3), m02_12 = __builtin_shufflevector(m02_13, m03_12, 0, 3);
+  const Pair m012_013 = low2(z01) * m12_13 - high2(z01) * m02_03 + z23 * low2(m01_23);
+  const Pair m023_123 = z01 * high2(m01_23) - low2(z23) * m03_13 + high2(z23) * m02_12;
+  // Then along h: (h3 m012 - h2 m013) + (h1 m023 - h0 m123).
+  const Pair t23 = __builtin_shufflevector(h23, h23, 1, 0) * m012_013, t01 = __builtin_shufflevector(h01, h01, 1, 0) * m023_123;
+  const Pair halves = __builtin_shufflevector(t23, t01, 0, 2) - __builtin_shufflevector(t23, t01, 1, 3);
+  const double det = halves[0] + halves[1];
   // The largest magnitudes of the x and y columns in one pair, z and h in another.
   const Pair ax = max2(abs2(x01), abs2(x23)), ay = max2(abs2(y01), abs2(y23)), az = max2(abs2(z01), abs2(z23));
   const Pair ah = kWeighted ? max2(s01 + abs2(d01), s23 + abs2(d23)) : max2(s01, s23);
