@@ -26,8 +26,8 @@ public:
   // faces of zero area, which weigh nothing in any measure over the faces.
   void clip(const Vec3& n, double offset);
 
-  bool empty() const { return normal_.empty(); }
-  std::size_t num_faces() const { return normal_.size(); }
+  bool empty() const { return faces_ == 0; }
+  std::size_t num_faces() const { return faces_; }
   // The face's outward unit normal, and its vertex loop (indices of
   // vertex()), counter-clockwise about the normal.
   const Vec3& normal(std::size_t f) const { return normal_[f]; }
@@ -42,8 +42,12 @@ private:
   // twice in a row (a cap lists each point cut on an edge once per face
   // of the edge).
   void keep_referenced();
+  // The buffers only grow (none is filled again per clip): faces_ and
+  // vertices_ say how much of normal_, start_ (one more) and vertex_ is
+  // the polyhedron's.
   std::vector<Vec3> normal_, vertex_;
   std::vector<std::uint32_t> corner_, start_{0};  // face f's loop: corner_[start_[f], start_[f + 1])
+  std::uint32_t faces_ = 0, vertices_ = 0;
   // Scratch for clip, kept to avoid allocations.
   std::vector<Vec3> next_normal_, next_vertex_;
   std::vector<std::uint32_t> next_corner_, next_start_, renumber_;
