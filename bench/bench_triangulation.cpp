@@ -102,6 +102,8 @@ int main() {
       // Unit density, weights (squared radii) in [0,1): about 8% hidden.
       {"weighted 1e5", testing::random_points(small, 3, std::cbrt(double(small))),
        testing::random_weights(small, 4, 0.0, 1.0), 3},
+      {"weighted 1e6", testing::random_points(large, 5, std::cbrt(double(large))),
+       testing::random_weights(large, 6, 0.0, 1.0), 3},
   };
 
   std::vector<Result> results;

@@ -27,7 +27,8 @@ using Pair = double __attribute__((vector_size(16)));
 using PairBits = long long __attribute__((vector_size(16)));
 inline Pair abs2(Pair a) { return (Pair)((PairBits)a & PairBits{0x7fffffffffffffffLL, 0x7fffffffffffffffLL}); }
 inline Pair max2(Pair a, Pair b) { return a > b ? a : b; }
-inline double larger_lane(Pair a) { return std::max(a[0], a[1]); }
+inline Pair low2(Pair a) { return __builtin_shufflevector(a, a, 0, 0); }  // both lanes the low one
+inline Pair high2(Pair a) { return __builtin_shufflevector(a, a, 1, 1); }
 
 // Returns the sign, or 2 when the filter cannot decide. The x and y columns
 // side by side in pairs, each value the expression written out would round.
@@ -70,18 +71,23 @@ template <bool kWeighted>
   const Pair x02 = __builtin_shufflevector(x01, x23, 0, 2), x13 = __builtin_shufflevector(x01, x23, 1, 3);
   const Pair y02 = __builtin_shufflevector(y01, y23, 0, 2), y13 = __builtin_shufflevector(y01, y23, 1, 3);
   const Pair m02_13 = x01 * y23 - x23 * y01, m03_12 = x01 * y32 - x32 * y01, m01_23 = x02 * y13 - x13 * y02;
-  const double m01 = m01_23[0], m23 = m01_23[1], m02 = m02_13[0], m13 = m02_13[1], m03 = m03_12[0], m12 = m03_12[1];
-  const double z0 = z01[0], z1 = z01[1], z2 = z23[0], z3 = z23[1];
-  // 3x3 minors with z, then along h.
-  const double m012 = z0 * m12 - z1 * m02 + z2 * m01;
-  const double m013 = z0 * m13 - z1 * m03 + z3 * m01;
-  const double m023 = z0 * m23 - z2 * m03 + z3 * m02;
-  const double m123 = z1 * m23 - z2 * m13 + z3 * m12;
-  const double det = (h23[1] * m012 - h23[0] * m013) + (h01[1] * m023 - h01[0] * m123);
-  const double mx = larger_lane(max2(abs2(x01), abs2(x23)));
-  const double my = larger_lane(max2(abs2(y01), abs2(y23)));
-  const double mz = larger_lane(max2(abs2(z01), abs2(z23)));
-  const double mh = kWeighted ? larger_lane(max2(s01 + abs2(d01), s23 + abs2(d23))) : larger_lane(max2(s01, s23));
+  // 3x3 minors with z, in pairs: m012 = z0 m12 - z1 m02 + z2 m01 beside
+  // m013 = z0 m13 - z1 m03 + z3 m01, m023 = z0 m23 - z2 m03 + z3 m02 beside
+  // m123 = z1 m23 - z2 m13 + z3 m12.
+  const Pair m12_13 = __builtin_shufflevector(m03_12, m02_13, 1, 3), m02_03 = __builtin_shufflevector(m02_13, m03_12, 0, 2);
+  const Pair m03_13 = __builtin_shufflevector(m03_12, m02_13, 0, 3), m02_12 = __builtin_shufflevector(m02_13, m03_12, 0, 3);
+  const Pair m012_013 = low2(z01) * m12_13 - high2(z01) * m02_03 + z23 * low2(m01_23);
+  const Pair m023_123 = z01 * high2(m01_23) - low2(z23) * m03_13 + high2(z23) * m02_12;
+  // Then along h: (h3 m012 - h2 m013) + (h1 m023 - h0 m123).
+  const Pair t23 = __builtin_shufflevector(h23, h23, 1, 0) * m012_013, t01 = __builtin_shufflevector(h01, h01, 1, 0) * m023_123;
+  const Pair halves = __builtin_shufflevector(t23, t01, 0, 2) - __builtin_shufflevector(t23, t01, 1, 3);
+  const double det = halves[0] + halves[1];
+  // The largest magnitudes of the x and y columns in one pair, z and h in another.
+  const Pair ax = max2(abs2(x01), abs2(x23)), ay = max2(abs2(y01), abs2(y23)), az = max2(abs2(z01), abs2(z23));
+  const Pair ah = kWeighted ? max2(s01 + abs2(d01), s23 + abs2(d23)) : max2(s01, s23);
+  const Pair mxy = max2(__builtin_shufflevector(ax, ay, 0, 2), __builtin_shufflevector(ax, ay, 1, 3));
+  const Pair mzh = max2(__builtin_shufflevector(az, ah, 0, 2), __builtin_shufflevector(az, ah, 1, 3));
+  const double mx = mxy[0], my = mxy[1], mz = mzh[0], mh = mzh[1];
   // mh >= mx^2, my^2, mz^2: its upper limit bounds them too.
   if (!in_filter_range(std::min({mx, my, mz, mh})) || !(mh < 1e60)) return 2;
   const double eps = kPowerBound * mx * my * mz * mh;
@@ -109,11 +115,6 @@ Vec3 Kernel::axis_offset(const Vec3& a, int axis) {
   x = x != 0 ? 2 * x : 1.0;  // exact: doubling, or a fresh 1
   return d;
 }
-
-int Kernel::orient3d(Index a, Index b, Index c, Index d) {
-  return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]);
-}
-
 
 // With the weight of point i raised by eps_i, the lifted determinant D (p
 // conflicts when D < 0) changes by -eps_i * cofactor_i, and the cofactor of a
@@ -168,23 +169,23 @@ bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[
 // The hottest predicate: the filter reads the points in place, and the arrays
 // the exact stage takes are built only when it cannot decide (out of line, so
 // that the filter's path does not prepare them).
-bool Kernel::power_conflict(Index a, Index b, Index c, Index d, Index p) {
+bool Kernel::power_conflict(const std::array<Index, 4>& v, Index p) {
   int s;
   if (w_) {
-    const double wq[4] = {w_[a], w_[b], w_[c], w_[d]};
-    s = filtered_power_det<true>(pts_[a], pts_[b], pts_[c], pts_[d], wq, pts_[p], w_[p]);
+    const double wq[4] = {w_[v[0]], w_[v[1]], w_[v[2]], w_[v[3]]};
+    s = filtered_power_det<true>(pts_[v[0]], pts_[v[1]], pts_[v[2]], pts_[v[3]], wq, pts_[p], w_[p]);
   } else {
-    s = filtered_power_det<false>(pts_[a], pts_[b], pts_[c], pts_[d], nullptr, pts_[p], 0.0);
+    s = filtered_power_det<false>(pts_[v[0]], pts_[v[1]], pts_[v[2]], pts_[v[3]], nullptr, pts_[p], 0.0);
   }
-  if (s == 2) return exact_power_conflict(a, b, c, d, p);
+  if (s == 2) return exact_power_conflict(v, p);
   ++stats_.power.filtered;
   return s < 0;
 }
 
-bool Kernel::exact_power_conflict(Index a, Index b, Index c, Index d, Index p) {
-  const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &pts_[d]};
-  const double wq[4] = {weight(a), weight(b), weight(c), weight(d)};
-  const Index id[4] = {a, b, c, d};
+bool Kernel::exact_power_conflict(const std::array<Index, 4>& v, Index p) {
+  const Vec3* q[4] = {&pts_[v[0]], &pts_[v[1]], &pts_[v[2]], &pts_[v[3]]};
+  const double wq[4] = {weight(v[0]), weight(v[1]), weight(v[2]), weight(v[3])};
+  const Index id[4] = {v[0], v[1], v[2], v[3]};
   return exact_conflict(q, wq, id, p);
 }
 

@@ -133,12 +133,14 @@ private:
   };
   static constexpr std::uint64_t kUsedEdge = ~0ull;
   // kSideFacets[i]: for a new cell whose vertex i is p, each facet j != i
-  // with the local indices of the boundary edge it holds (the two other than i and j).
+  // with the local indices a, b of the boundary edge it holds, in the order
+  // (i, a, b) that kFacet[j] lists them cyclically. The new cell across that
+  // facet sees it from the other side: it lists the same edge as (b, a).
   static constexpr std::array<std::array<std::array<int, 3>, 3>, 4> kSideFacets{{
-      {{{1, 2, 3}, {2, 1, 3}, {3, 1, 2}}},
-      {{{0, 2, 3}, {2, 0, 3}, {3, 0, 2}}},
-      {{{0, 1, 3}, {1, 0, 3}, {3, 0, 1}}},
-      {{{0, 1, 2}, {1, 0, 2}, {2, 0, 1}}},
+      {{{1, 2, 3}, {2, 3, 1}, {3, 1, 2}}},
+      {{{0, 3, 2}, {2, 0, 3}, {3, 2, 0}}},
+      {{{0, 1, 3}, {1, 3, 0}, {3, 0, 1}}},
+      {{{0, 2, 1}, {1, 0, 2}, {2, 1, 0}}},
   }};
 
   Triangulation& t_;
@@ -230,14 +232,14 @@ private:
     return -1;
   }
 
-  bool conflict(Index c, Index p) {
-    const auto& v = cells_[c].v;
-    for (int k = 0; k < 4; ++k)
-      if (v[k] == kInfinite) {
-        const auto& f = kFacet[k];
-        return kernel_.hull_conflict(v[f[0]], v[f[1]], v[f[2]], p);
-      }
-    return kernel_.power_conflict(v[0], v[1], v[2], v[3], p);
+  bool conflict(const Cell& cell, Index p) {
+    const auto& v = cell.v;
+    // kInfinite is the largest vertex id: one maximum tells a finite cell.
+    if (std::max(std::max(v[0], v[1]), std::max(v[2], v[3])) == kInfinite) {
+      const auto& f = kFacet[v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3];
+      return kernel_.hull_conflict(v[f[0]], v[f[1]], v[f[2]], p);
+    }
+    return kernel_.power_conflict(v, p);
   }
 
   // Visibility walk from `start` to a cell whose closure holds p (for a point
@@ -272,7 +274,7 @@ private:
     if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
     const Index start = locate(p, hint);
     stamp_ += 2;
-    if (!conflict(start, p)) {
+    if (!conflict(cells_[start], p)) {
       t_.status_[input_[p]] = PointStatus::hidden;
       return start;
     }
@@ -285,22 +287,26 @@ private:
 
   void find_cavity(Index start, Index p) {
     conflict_.clear(), boundary_.clear(), stack_.clear();
-    cell_mark_[start] = stamp_;
+    // Nothing here resizes the cells or their marks.
+    const Cell* const cells = cells_.data();
+    std::uint32_t* const mark = cell_mark_.data();
+    const std::uint32_t in = stamp_, out = stamp_ + 1;
+    mark[start] = in;
     stack_.push_back(start);
     while (!stack_.empty()) {
       const Index c = stack_.back();
       stack_.pop_back();
       conflict_.push_back(c);
       for (int i = 0; i < 4; ++i) {
-        const Index n = cells_[c].n[i];
-        if (cell_mark_[n] == stamp_) continue;
-        if (cell_mark_[n] != stamp_ + 1 && conflict(n, p)) {
-          cell_mark_[n] = stamp_;
+        const Index n = cells[c].n[i];
+        if (mark[n] == in) continue;
+        if (mark[n] != out && conflict(cells[n], p)) {
+          mark[n] = in;
           stack_.push_back(n);
           continue;
         }
-        cell_mark_[n] = stamp_ + 1;
-        Facet f{cells_[c].v, i, n, index_of_neighbor(n, c)};
+        mark[n] = out;
+        Facet f{cells[c].v, i, n, index_of_neighbor(n, c)};
         f.v[i] = p;
         boundary_.push_back(f);
       }
@@ -314,12 +320,25 @@ private:
     return -1;
   }
 
-  // Replaces the conflict cells by p joined to each boundary facet.
+  // Replaces the conflict cells by p joined to each boundary facet: the
+  // free cells first (last freed first), then new ids in increasing order.
   Index fill_cavity() {
     for (Index c : conflict_) free_cells_.push_back(c);
+    Index next_new = static_cast<Index>(cells_.size());
+    if (boundary_.size() > free_cells_.size()) {
+      const std::size_t size = cells_.size() + boundary_.size() - free_cells_.size();
+      // Cell ids are 32-bit, kNone and kInfinite reserved (some 6e8 points).
+      if (size > kInfinite) fail("too many cells for 32-bit cell ids", ErrorKind::LimitExceeded);
+      cells_.resize(size);
+      if (cell_mark_.size() < size) cell_mark_.resize(size * 2, 0);
+    }
     const std::size_t slots = std::bit_ceil(4 * boundary_.size() + 16);
     if (edges_.size() < slots) edges_.assign(slots, EdgeSlot{0, 0, 0, 0});
     const std::size_t mask = edges_.size() - 1;
+    Cell* const cells = cells_.data();
+    std::uint32_t* const mark = cell_mark_.data();
+    EdgeSlot* const edges = edges_.data();
+    const std::uint32_t stamp = stamp_;
     Index made = kNone;
     for (const Facet& f : boundary_) {
       Index c;
@@ -327,30 +346,29 @@ private:
         c = free_cells_.back();
         free_cells_.pop_back();
       } else {
-        // Cell ids are 32-bit, kNone and kInfinite reserved (some 6e8 points).
-        if (cells_.size() >= kInfinite) fail("too many cells for 32-bit cell ids", ErrorKind::LimitExceeded);
-        c = static_cast<Index>(cells_.size());
-        cells_.push_back({});
-        if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
+        c = next_new++;
       }
-      cell_mark_[c] = 0;
-      cells_[c].v = f.v;
-      cells_[c].n[f.i] = f.outside;
-      cells_[f.outside].n[f.mirror] = c;
+      mark[c] = 0;
+      Cell& cell = cells[c];
+      cell.v = f.v;
+      cell.n[f.i] = f.outside;
+      cells[f.outside].n[f.mirror] = c;
       // The other three facets contain p and one edge of the boundary facet;
       // the cell sharing that edge is the neighbour.
+      // Edges are keyed by direction (no unpredictable min/max), hashed
+      // symmetrically: a looks for the b -> a its neighbour left, in the same chain.
       for (const auto& [j, ka, kb] : kSideFacets[f.i]) {
         const Index a = f.v[ka], b = f.v[kb];
-        const std::uint64_t key = std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
-        std::size_t h = (key * 0x9e3779b97f4a7c15ull) >> 40 & mask;
-        while (edges_[h].stamp == stamp_ && edges_[h].key != key) h = (h + 1) & mask;
-        EdgeSlot& slot = edges_[h];
-        if (slot.stamp == stamp_) {
-          cells_[c].n[j] = slot.cell;
-          cells_[slot.cell].n[slot.facet] = c;
+        const std::uint64_t wanted = std::uint64_t(b) << 32 | a;
+        std::size_t h = ((std::uint64_t(a) + b) * 0x9e3779b97f4a7c15ull) >> 40 & mask;
+        while (edges[h].stamp == stamp && edges[h].key != wanted) h = (h + 1) & mask;
+        EdgeSlot& slot = edges[h];
+        if (slot.stamp == stamp) {
+          cell.n[j] = slot.cell;
+          cells[slot.cell].n[slot.facet] = c;
           slot.key = kUsedEdge;  // each edge is shared by exactly two new cells
         } else {
-          slot = {key, c, stamp_, j};
+          slot = {std::uint64_t(a) << 32 | b, c, stamp, j};
         }
       }
       made = c;

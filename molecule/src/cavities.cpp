@@ -342,7 +342,7 @@ private:
     for (Index c : cells) {
       const Vec3& x = space[c].centroid;
       if (!mouths.empty() && !mouths.within(x, cav.depth, near_mouth))
-        cav.depth = std::max(cav.depth, mouths.distance(x, cav.depth));
+        cav.depth = std::max(cav.depth, mouths.distance(x, near_mouth));
     }
 
     const double r2 = options_.burial_radius * options_.burial_radius;

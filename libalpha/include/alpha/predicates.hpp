@@ -51,13 +51,16 @@ public:
 
   // Sign of det[b-a, c-a, d-a]: +1 when d lies on the side of plane abc
   // from which a,b,c appear counter-clockwise. Exact, may be 0.
-  int orient3d(Index a, Index b, Index c, Index d);
+  int orient3d(Index a, Index b, Index c, Index d) { return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]); }
   int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
   // Whether point p conflicts with the positively oriented cell (a,b,c,d):
   // its power distance to the cell's orthosphere is negative (for unweighted
   // points: p strictly inside the circumsphere). Perturbed: never undecided.
-  bool power_conflict(Index a, Index b, Index c, Index d, Index p);
+  bool power_conflict(Index a, Index b, Index c, Index d, Index p) { return power_conflict({a, b, c, d}, p); }
+  // The same for the cell's vertex array (the indices stay in memory: the
+  // filter's path keeps fewer of them in registers).
+  bool power_conflict(const std::array<Index, 4>& v, Index p);
 
   // The same for the infinite cell (a,b,c,inf), where the hull facet (a,b,c)
   // is oriented so that orient3d(a,b,c,q) > 0 for q outside the hull: p
@@ -86,7 +89,7 @@ private:
   bool cell_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   // Its exact and perturbed stages, when the filter cannot decide.
   bool exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
-  [[gnu::noinline]] bool exact_power_conflict(Index a, Index b, Index c, Index d, Index p);
+  [[gnu::noinline]] bool exact_power_conflict(const std::array<Index, 4>& v, Index p);
   template <class OrientWithP>
   bool perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p);
 };
