@@ -393,8 +393,47 @@ TEST_CASE("inputs outside the filter's range are compared exactly", "[sizes]") {
     Input in;
     in.pts = testing::random_points(40, 51);
     for (Vec3& p : in.pts) p = {p.x * scale, p.y * scale, p.z * scale};
+    CHECK(!all_in_filter_range(in.pts.data(), nullptr, in.pts.size()));
     SizeKernel k = in.kernel();
     check_random_simplices(k, in, 40, 52);
+  }
+}
+
+TEST_CASE("points promised in the filter's range give the sizes checked ones do", "[sizes]") {
+  // The range's ends: coordinates 0 or of magnitude 2^-27 to 2^99, weights
+  // 0 or 2^-107 to 2^199.
+  const auto in_range = [](Vec3 p, double w) { return all_in_filter_range(&p, &w, 1); };
+  CHECK(in_range({0, 0x1p-27, -0x1p99}, 0));
+  CHECK(in_range({1, 1, 1}, 0x1p-107));
+  CHECK(in_range({1, 1, 1}, 0x1p199));
+  CHECK(!in_range({0x1p-28, 1, 1}, 0));
+  CHECK(!in_range({1, -0x1p100, 1}, 0));
+  CHECK(!in_range({1, 1, 1}, 0x1p-108));
+  CHECK(!in_range({1, 1, 1}, 0x1p200));
+  // Random weighted points near the lower end (differences down to 2^-79,
+  // products near the filter's underflow limit) and at unit scale: the
+  // promised kernel's sizes and attachments are the checking kernel's.
+  for (const double scale : {0x1p-26, 1.0, 0x1p90}) {
+    INFO("scale " << scale);
+    Input in;
+    in.pts = testing::random_points(60, 71);
+    in.w = testing::random_weights(60, 72, 0, 0.05);
+    for (Vec3& p : in.pts) p = {p.x * scale + 0x1p-27, p.y * scale + 0x1p-27, p.z * scale + 0x1p-27};
+    for (double& w : in.w) w *= scale * scale;
+    REQUIRE(all_in_filter_range(in.pts.data(), in.w.data(), in.pts.size()));
+    SizeKernel checked = in.kernel(), promised(in.pts.data(), in.w.data(), false, true);
+    std::mt19937_64 rng(73);
+    int differ = 0, finite = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+      const Simplex s = random_simplex(rng, in.pts.size(), 1 + trial % 4);
+      const Size a = checked.size(s), b = promised.size(s);
+      differ += std::bit_cast<std::uint64_t>(a.value) != std::bit_cast<std::uint64_t>(b.value) ||
+                std::bit_cast<std::uint64_t>(a.error) != std::bit_cast<std::uint64_t>(b.error);
+      finite += std::isfinite(a.error);
+      if (s.n < 4) differ += checked.attached(s, Index(trial % 60)) != promised.attached(s, Index(trial % 60));
+    }
+    CHECK(differ == 0);
+    CHECK(finite > 300);
   }
 }
 
@@ -584,6 +623,13 @@ TEST_CASE("attached agrees with exact power distances", "[sizes]") {
       for (const Index x : qs) any = any || power(in, *sp, x) < 0;
       any_attached += any;
       wrong_any += k.attached_any(s, qs) != any;
+      // size_unless_attached: nothing when attached, else size(s) bit for bit.
+      const std::optional<Size> z = k.size_unless_attached(s, qs);
+      const Size want = k.size(s);
+      wrong_any += z.has_value() == any;
+      if (z)
+        wrong_any += std::bit_cast<std::uint64_t>(z->value) != std::bit_cast<std::uint64_t>(want.value) ||
+                     std::bit_cast<std::uint64_t>(z->error) != std::bit_cast<std::uint64_t>(want.error);
     }
     CHECK(wrong == 0);
     CHECK(wrong_any == 0);

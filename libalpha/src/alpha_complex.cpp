@@ -39,8 +39,9 @@ public:
           if (t.weighted()) weights_.push_back(t.weight(v));
         }
     small_integers_ = all_small_integers(points_.data(), weights(), points_.size());
+    in_filter_range_ = all_in_filter_range(points_.data(), weights(), points_.size());
   }
-  SizeKernel kernel() const { return SizeKernel(points_.data(), weights(), small_integers_); }
+  SizeKernel kernel() const { return SizeKernel(points_.data(), weights(), small_integers_, in_filter_range_); }
   Index operator[](Index v) const { return local_[v]; }
   Simplex operator()(Simplex s) const {
     for (int i = 0; i < s.n; ++i) s.v[i] = local_[s.v[i]];
@@ -52,6 +53,7 @@ private:
   std::vector<Vec3> points_;
   std::vector<double> weights_;
   bool small_integers_ = false;  // grids: their ties decided in doubles
+  bool in_filter_range_ = false;  // the filter checks no value
   const double* weights() const { return weights_.empty() ? nullptr : weights_.data(); }
 };
 
@@ -94,21 +96,14 @@ void AlphaComplex::rank_critical() {
   // Attachment depends on no size: a face is attached when the vertex of a
   // coface opposite to it lies inside its smallest orthogonal sphere. (Sums
   // of vertex ids wrap exactly: they give the one vertex not in the face.)
-  // Edges and vertices are tested from their cofaces, walked in id order.
-  // Without weights no vertex is attached: its sphere is the point itself.
+  // Edges and vertices are tested from their cofaces, walked in id order;
+  // triangles below, with their sizes. Without weights no vertex is
+  // attached: its sphere is the point itself.
   vertex_attached_.resize(t.num_points());
   edge_attached_.resize(s.num_edges());
   triangle_attached_.resize(s.num_triangles());
-  std::vector<Index> others;
   for (Index f = 0; f < s.num_triangles(); ++f) {
     const auto fv = s.triangle(f);
-    others.clear();
-    for (const Index c : s.triangle_cells(f)) {
-      if (t.is_infinite(c)) continue;
-      const auto& cv = t.cell(c).v;
-      others.push_back(local[cv[0] + cv[1] + cv[2] + cv[3] - fv[0] - fv[1] - fv[2]]);
-    }
-    triangle_attached_[f] = sizes.attached_any(local(Simplex(fv[0], fv[1], fv[2])), others);
     for (int k = 0; k < 3; ++k) {  // edge k is opposite vertex k
       const Index e = s.triangle_edges(f)[k];
       if (!edge_attached_[e])
@@ -151,12 +146,12 @@ void AlphaComplex::rank_critical() {
     const double x = low(c) + double(c.width);
     return std::isnan(x) ? HUGE_VAL : x;
   };
+  // Reserved for every triangle (pages of the attached ones' slots are
+  // never touched).
   std::vector<Critical> order;
   reserve_huge(order, t.num_finite_cells() + t.num_vertices() +
-                std::count(edge_attached_.begin(), edge_attached_.end(), false) +
-                std::count(triangle_attached_.begin(), triangle_attached_.end(), false));
-  auto add = [&](Index g) {
-    Size z = sizes.size(local(simplex(g)));
+                std::count(edge_attached_.begin(), edge_attached_.end(), false) + s.num_triangles());
+  auto add = [&](Index g, Size z) {
     // Where the filter fails (nearly flat simplices) its value says nothing
     // about the place in the order: take the exact size's nearest double,
     // within half an ulp (an unbounded error if it overflows).
@@ -178,14 +173,26 @@ void AlphaComplex::rank_critical() {
     }
     order.push_back({ordered(lo), width, g});
   };
+  auto add_size = [&](Index g) { add(g, sizes.size(local(simplex(g)))); };
   for (Index v = 0; v < t.num_points(); ++v)
-    if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add(v);
+    if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add_size(v);
   for (Index e = 0; e < s.num_edges(); ++e)
-    if (!edge_attached_[e]) add(ids_.edges + e);
-  for (Index f = 0; f < s.num_triangles(); ++f)
-    if (!triangle_attached_[f]) add(ids_.triangles + f);
+    if (!edge_attached_[e]) add_size(ids_.edges + e);
+  std::vector<Index> others;
+  for (Index f = 0; f < s.num_triangles(); ++f) {
+    const auto fv = s.triangle(f);
+    others.clear();
+    for (const Index c : s.triangle_cells(f)) {
+      if (t.is_infinite(c)) continue;
+      const auto& cv = t.cell(c).v;
+      others.push_back(local[cv[0] + cv[1] + cv[2] + cv[3] - fv[0] - fv[1] - fv[2]]);
+    }
+    const std::optional<Size> z = sizes.size_unless_attached(local(Simplex(fv[0], fv[1], fv[2])), others);
+    triangle_attached_[f] = !z;
+    if (z) add(ids_.triangles + f, *z);
+  }
   for (Index c = 0; c < t.num_cells(); ++c)
-    if (!t.is_infinite(c)) add(ids_.cells + c);
+    if (!t.is_infinite(c)) add_size(ids_.cells + c);
   radix_sort_in_place(std::span(order), [](const Critical& c) { return c.low; },
                       [](const Critical& c) { return c.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).

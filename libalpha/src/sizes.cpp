@@ -52,6 +52,20 @@ template <class T> void cross(const T* a, const T* b, T* r) {
 
 template <class T> T lifted(const Local<T>& s, int i) { return dot(s.u[i], s.u[i]) - s.dw[i]; }
 
+// A triangle's normal n, A = |n|^2 and V (shared by its size and its power
+// frame, so that both compute the same values).
+template <class T> void triangle_plane(const Local<T>& s, T* n, T& A, T* V) {
+  const auto& u = s.u;
+  cross(u[0], u[1], n);
+  A = dot(n, n);
+  const T h0 = lifted(s, 0), h1 = lifted(s, 1);
+  for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
+}
+template <class T> void triangle_size(const Local<T>& s, const T& A, const T* V, T& N, T& D) {
+  N = dot(V, V) - s.w0 * A * 4;
+  D = A * 4;
+}
+
 template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
   const auto& u = s.u;
   if (s.k == 0) {
@@ -63,13 +77,9 @@ template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
     N = h * h - s.w0 * L * 4;
     D = L * 4;
   } else if (s.k == 2) {
-    T n[3], V[3];
-    cross(u[0], u[1], n);
-    const T A = dot(n, n);
-    const T h0 = lifted(s, 0), h1 = lifted(s, 1);
-    for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
-    N = dot(V, V) - s.w0 * A * 4;
-    D = A * 4;
+    T n[3], A, V[3];
+    triangle_plane(s, n, A, V);
+    triangle_size(s, A, V, N, D);
   } else {
     T c[3][3], m[3];
     cross(u[1], u[2], c[0]);
@@ -91,6 +101,7 @@ template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
 template <class T> struct PowerFrame {
   T den;    // 1, L or A
   T h;      // edge: h0
+  T V[3];   // triangle: V (for its size)
   T Vn[3];  // triangle: V x n
 };
 
@@ -103,12 +114,9 @@ template <class T> PowerFrame<T> power_frame(const Local<T>& s) {
     f.den = dot(u[0], u[0]);
     f.h = f.den - s.dw[0];
   } else {
-    T n[3], V[3];
-    cross(u[0], u[1], n);
-    f.den = dot(n, n);
-    const T h0 = lifted(s, 0), h1 = lifted(s, 1);
-    for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
-    cross(V, n, f.Vn);
+    T n[3];
+    triangle_plane(s, n, f.den, f.V);
+    cross(f.V, n, f.Vn);
   }
   return f;
 }
@@ -143,6 +151,11 @@ template <class T> T power_terms(const Local<T>& s, const PowerFrame<T>& f, cons
 // permanent of a product of degree <= 8 exceeds 2^-640, so an underflowing
 // product errs by less than 2^-1075 < 2^-435 of its permanent: negligible
 // next to u. Outside the range the filter gives up (error = +inf).
+// Checked once for all points (all_in_filter_range) instead of at each
+// leaf: coordinates 0 or of magnitude in [2^-27, 2^99] are multiples of
+// 2^-79, so their nonzero differences lie in [2^-79, 2^100] (rounding
+// is monotone and both ends are doubles); weights 0 or in [2^-107, 2^199]
+// likewise give differences in [2^-159, 2^200].
 constexpr double kU = 0x1p-53;
 constexpr double kMinLength = 0x1p-80, kMaxLength = 0x1p100;
 constexpr double kMinArea = 0x1p-160, kMaxArea = 0x1p200;
@@ -168,12 +181,13 @@ bool in_range(double x, double lo, double hi) {
   const double a = std::fabs(x);
   return (a == 0) | ((a >= lo) & (a <= hi));  // false for NaN and inf; no branches
 }
-Approx length_leaf(double x, bool& ok) {
-  ok &= in_range(x, kMinLength, kMaxLength);
+// A leaf, checked unless every point is known to be in range.
+template <bool kCheck = true> Approx length_leaf(double x, bool& ok) {
+  if constexpr (kCheck) ok &= in_range(x, kMinLength, kMaxLength);
   return {x, std::fabs(x)};
 }
-Approx area_leaf(double x, bool& ok) {
-  ok &= in_range(x, kMinArea, kMaxArea);
+template <bool kCheck = true> Approx area_leaf(double x, bool& ok) {
+  if constexpr (kCheck) ok &= in_range(x, kMinArea, kMaxArea);
   return {x, std::fabs(x)};
 }
 
@@ -340,6 +354,17 @@ bool all_small_integers(const Vec3* points, const double* weights, std::size_t n
   return all;
 }
 
+bool all_in_filter_range(const Vec3* points, const double* weights, std::size_t n) {
+  constexpr double kLow = 0x1p-27, kHigh = 0x1p99, kLowWeight = 0x1p-107, kHighWeight = 0x1p199;  // see the filter
+  bool all = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& p = points[i];
+    all &= in_range(p.x, kLow, kHigh) & in_range(p.y, kLow, kHigh) & in_range(p.z, kLow, kHigh) &
+           (!weights || in_range(weights[i], kLowWeight, kHighWeight));
+  }
+  return all;
+}
+
 bool SizeKernel::small_integers(std::span<const Index> ids) const {
   if (small_integers_) return true;
   bool all = true;
@@ -371,21 +396,42 @@ Simplex sorted(const Simplex& s) {
 namespace {
 
 // The filter's local frame of a sorted simplex; ok turns false when a leaf
-// is out of the filter's range.
-Local<Approx> approx_local(const Vec3* pts, const double* w, const Simplex& s, bool& ok) {
+// is out of the filter's range (with kCheck; without, the caller knows
+// every point in range).
+template <bool kCheck> Local<Approx> approx_local(const Vec3* pts, const double* w, const Simplex& s, bool& ok) {
   const double w0 = w ? w[s.v[0]] : 0.0;
   Local<Approx> l;
   l.k = s.n - 1;
-  l.w0 = area_leaf(w0, ok);
+  l.w0 = area_leaf<kCheck>(w0, ok);
   const Vec3& p0 = pts[s.v[0]];
   for (int i = 0; i < l.k; ++i) {
     const Vec3& p = pts[s.v[i + 1]];
-    l.u[i][0] = length_leaf(p.x - p0.x, ok);
-    l.u[i][1] = length_leaf(p.y - p0.y, ok);
-    l.u[i][2] = length_leaf(p.z - p0.z, ok);
-    l.dw[i] = area_leaf(w ? w[s.v[i + 1]] - w0 : 0.0, ok);
+    l.u[i][0] = length_leaf<kCheck>(p.x - p0.x, ok);
+    l.u[i][1] = length_leaf<kCheck>(p.y - p0.y, ok);
+    l.u[i][2] = length_leaf<kCheck>(p.z - p0.z, ok);
+    l.dw[i] = area_leaf<kCheck>(w ? w[s.v[i + 1]] - w0 : 0.0, ok);
   }
   return l;
+}
+Local<Approx> approx_local(const Vec3* pts, const double* w, const Simplex& s, bool& ok, bool in_filter_range) {
+  return in_filter_range ? approx_local<false>(pts, w, s, ok) : approx_local<true>(pts, w, s, ok);
+}
+
+}  // namespace
+
+namespace {
+
+// The filtered size N / D of a simplex of k + 1 vertices (k > 0), whose
+// leaves were in range (ok) or not.
+Size filtered_size(const Approx& N, const Approx& D, int k, bool ok) {
+  double value = N.v / D.v;
+  if (std::isnan(value)) value = HUGE_VAL;  // D = 0: keep values sortable
+  const double eN = kSizeN[k] * N.p, eD = kSizeD[k] * D.p;
+  if (!ok || !(D.v > eD)) return {value, HUGE_VAL};
+  // N/D - N'/D' = (N - N')/D' + N (1/D - 1/D') for the exact N', D' with
+  // D' >= D - eD > 0; then the rounding of the quotient itself.
+  const double bound = (eN + std::fabs(N.v) * (eD / D.v)) / (D.v - eD) + kU * std::fabs(value);
+  return {value, bound * kSlack + kTiny};
 }
 
 }  // namespace
@@ -394,17 +440,10 @@ Size SizeKernel::size(const Simplex& simplex) const {
   const Simplex s = sorted(simplex);
   if (s.n == 1) return {w_ ? -w_[s.v[0]] : -0.0, 0};
   bool ok = true;
-  const Local<Approx> l = approx_local(pts_, w_, s, ok);
+  const Local<Approx> l = approx_local(pts_, w_, s, ok, in_filter_range_);
   Approx N, D;
   size_terms(l, N, D);
-  double value = N.v / D.v;
-  if (std::isnan(value)) value = HUGE_VAL;  // D = 0: keep values sortable
-  const double eN = kSizeN[l.k] * N.p, eD = kSizeD[l.k] * D.p;
-  if (!ok || !(D.v > eD)) return {value, HUGE_VAL};
-  // N/D - N'/D' = (N - N')/D' + N (1/D - 1/D') for the exact N', D' with
-  // D' >= D - eD > 0; then the rounding of the quotient itself.
-  const double bound = (eN + std::fabs(N.v) * (eD / D.v)) / (D.v - eD) + kU * std::fabs(value);
-  return {value, bound * kSlack + kTiny};
+  return filtered_size(N, D, l.k, ok);
 }
 
 Vec3 SizeKernel::center(const Simplex& simplex) const {
@@ -475,7 +514,7 @@ std::optional<SmallFraction> small_fraction(const SizeKernel& kernel, const Simp
   const Simplex s = sorted(simplex);
   if (!kernel.small_integers(std::span<const Index>(s.v.data(), std::size_t(s.n)))) return std::nullopt;
   bool ok = true;  // unused: such integers neither over- nor underflow
-  const Local<Approx> l = approx_local(kernel.points(), kernel.weights(), s, ok);
+  const Local<Approx> l = approx_local<false>(kernel.points(), kernel.weights(), s, ok);
   Approx N, D;
   size_terms(l, N, D);
   if (!(N.p < kExactPermanent && D.p < kExactPermanent)) return std::nullopt;
@@ -762,6 +801,14 @@ int SizeKernel::compare(const Simplex& a, double alpha_sq) {
 
 bool SizeKernel::attached(const Simplex& s, Index q) { return attached_any(s, std::span<const Index>(&q, 1)); }
 
+bool SizeKernel::attached_any(const Simplex& s, std::span<const Index> qs) { return attached_any(s, qs, nullptr); }
+
+std::optional<Size> SizeKernel::size_unless_attached(const Simplex& s, std::span<const Index> qs) {
+  Size z;
+  if (attached_any(s, qs, &z)) return std::nullopt;
+  return z;
+}
+
 namespace {
 
 // Unweighted edge ab and point q: the power distance of q to the edge's
@@ -785,7 +832,7 @@ int edge_power_sign(const SizeKernel& kernel, Index a, Index b, Index q) {
 
 }  // namespace
 
-bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs) {
+bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs, Size* size) {
   const auto distinct = [&](Index a, Index b) {
     return pts_[a].x != pts_[b].x || pts_[a].y != pts_[b].y || pts_[a].z != pts_[b].z;
   };
@@ -797,13 +844,16 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
       ++(sign != 0 ? stats_.attached.filtered : stats_.attached.perturbed);
       if (sign < 0) return true;
     }
-    if (k == qs.size()) return false;
+    if (k == qs.size()) {
+      if (size) *size = this->size(simplex);
+      return false;
+    }
     qs = qs.subspan(k);
   }
   const Simplex s = sorted(simplex);
   if (s.n > 3) fail("attached: only vertices, edges and triangles can be attached", ErrorKind::Misuse);
   bool ok = true;
-  const Local<Approx> l = approx_local(pts_, w_, s, ok);
+  const Local<Approx> l = approx_local(pts_, w_, s, ok, in_filter_range_);
   const PowerFrame<Approx> frame = power_frame(l);
   const double w0 = w_ ? w_[s.v[0]] : 0.0;
   const Vec3& p0 = pts_[s.v[0]];
@@ -812,9 +862,12 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
     const double wq = w_ ? w_[q] : 0.0;
     const Vec3& pq = pts_[q];
     bool ok_q = ok;
-    const Approx v[3] = {length_leaf(pq.x - p0.x, ok_q), length_leaf(pq.y - p0.y, ok_q),
-                         length_leaf(pq.z - p0.z, ok_q)};
-    const Approx P = power_terms(l, frame, v, area_leaf(w0 - wq, ok_q));
+    const double d[4] = {pq.x - p0.x, pq.y - p0.y, pq.z - p0.z, w0 - wq};
+    if (!in_filter_range_)
+      ok_q &= in_range(d[0], kMinLength, kMaxLength) & in_range(d[1], kMinLength, kMaxLength) &
+              in_range(d[2], kMinLength, kMaxLength) & in_range(d[3], kMinArea, kMaxArea);
+    const Approx v[3] = {{d[0], std::fabs(d[0])}, {d[1], std::fabs(d[1])}, {d[2], std::fabs(d[2])}};
+    const Approx P = power_terms(l, frame, v, Approx(d[3], std::fabs(d[3])));
     const double e = kPower[l.k] * P.p + kTiny;
     if (ok_q && (P.v > e || P.v < -e)) {
       ++stats_.attached.filtered;
@@ -844,6 +897,13 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs)
     });
     ++(sign != 0 ? stats_.attached.exact : stats_.attached.perturbed);
     if (sign < 0) return true;
+  }
+  if (size && s.n == 3) {  // from the frame: the values size() computes
+    Approx N, D;
+    triangle_size(l, frame.den, frame.V, N, D);
+    *size = filtered_size(N, D, l.k, ok);
+  } else if (size) {
+    *size = this->size(s);
   }
   return false;
 }

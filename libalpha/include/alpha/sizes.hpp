@@ -18,6 +18,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 
 #include "alpha/geometry.hpp"
@@ -66,9 +67,11 @@ public:
   // small_integers: the caller's promise that every coordinate and weight
   // is an integer of magnitude at most 2^50 (all_small_integers checks
   // it); their ties are then decided in doubles without checking each
-  // simplex's points (grids).
-  SizeKernel(const Vec3* points, const double* weights, bool small_integers = false)
-      : pts_(points), w_(weights), small_integers_(small_integers) {}
+  // simplex's points (grids). in_filter_range: the promise that every
+  // point is in the filter's range (all_in_filter_range checks it); no
+  // value is then checked at each simplex.
+  SizeKernel(const Vec3* points, const double* weights, bool small_integers = false, bool in_filter_range = false)
+      : pts_(points), w_(weights), small_integers_(small_integers), in_filter_range_(in_filter_range) {}
 
   // The filtered size: allocation-free, tens of nanoseconds.
   Size size(const Simplex& s) const;
@@ -91,6 +94,9 @@ public:
   // Whether any of the points qs attaches s: attached(s, q) for each q in
   // turn, up to the first true, with the terms of s computed once.
   bool attached_any(const Simplex& s, std::span<const Index> qs);
+  // size(s) when no point of qs attaches s, nothing when one does: a
+  // triangle's size from the terms of its attached test.
+  std::optional<Size> size_unless_attached(const Simplex& s, std::span<const Index> qs);
 
   const SizeStats& stats() const { return stats_; }
   const Vec3* points() const { return pts_; }
@@ -103,11 +109,17 @@ private:
   const Vec3* pts_;
   const double* w_;
   bool small_integers_;
+  bool in_filter_range_;
   SizeStats stats_;
+  bool attached_any(const Simplex& s, std::span<const Index> qs, Size* size);  // size: set when false
 };
 
 // Whether every coordinate and weight (null: none) of n points is an
 // integer of magnitude at most 2^50: SizeKernel's promise.
 bool all_small_integers(const Vec3* points, const double* weights, std::size_t n);
+// Whether every coordinate of n points is 0 or of magnitude in [2^-27,
+// 2^99], and every weight (null: none) 0 or in [2^-107, 2^199]: then every
+// difference the filter reads is in its range. SizeKernel's promise.
+bool all_in_filter_range(const Vec3* points, const double* weights, std::size_t n);
 
 }  // namespace alpha
