@@ -47,16 +47,30 @@ int run_persistence(const InputOptions& opt) {
       throw std::runtime_error("cannot write to standard output");
     out.clear();
   };
+  // Each column's last value kept as text: lattices have few distinct
+  // values, and sorted pairs repeat them on consecutive lines.
+  struct Last {
+    alpha::Index rank = alpha::kNever;
+    std::string text;
+  } birth, death;
+  auto append_rank = [&](Last& last, alpha::Index rank) {
+    if (rank != last.rank) {
+      last.rank = rank;
+      last.text.clear();
+      append_value(last.text, ac.spectrum_value(rank));
+    }
+    out += last.text;
+  };
   for (const alpha::PersistencePair& p : pairs) {
     if (p.birth == p.death) continue;  // zero length (the complex keeps none; be sure)
     out += char('0' + p.dim);
     out += ' ';
-    append_value(out, ac.spectrum_value(p.birth));
+    append_rank(birth, p.birth);
     out += ' ';
     if (p.death == alpha::kNever)
       out += "inf";
     else
-      append_value(out, ac.spectrum_value(p.death));
+      append_rank(death, p.death);
     out += '\n';
     ++lines;
     if (out.size() >= (std::size_t(1) << 20)) write();

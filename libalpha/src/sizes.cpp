@@ -50,46 +50,56 @@ template <class T> void cross(const T* a, const T* b, T* r) {
   r[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-template <class T> T lifted(const Local<T>& s, int i) { return dot(s.u[i], s.u[i]) - s.dw[i]; }
+// kWeighted false: every weight is 0, its terms are left out (the
+// double-double rounding's; the filter keeps one code path).
+template <bool kWeighted, class T> T lifted(const Local<T>& s, int i) {
+  if constexpr (kWeighted) return dot(s.u[i], s.u[i]) - s.dw[i];
+  return dot(s.u[i], s.u[i]);
+}
+// x - 4 w0 X, the last term of N.
+template <bool kWeighted, class T> T minus_weight(const Local<T>& s, const T& x, const T& X) {
+  if constexpr (kWeighted) return x - s.w0 * X * 4;
+  return x;
+}
 
 // A triangle's normal n, A = |n|^2 and V (shared by its size and its power
 // frame, so that both compute the same values).
-template <class T> void triangle_plane(const Local<T>& s, T* n, T& A, T* V) {
+template <bool kWeighted = true, class T> void triangle_plane(const Local<T>& s, T* n, T& A, T* V) {
   const auto& u = s.u;
   cross(u[0], u[1], n);
   A = dot(n, n);
-  const T h0 = lifted(s, 0), h1 = lifted(s, 1);
+  const T h0 = lifted<kWeighted>(s, 0), h1 = lifted<kWeighted>(s, 1);
   for (int a = 0; a < 3; ++a) V[a] = h0 * u[1][a] - h1 * u[0][a];
 }
-template <class T> void triangle_size(const Local<T>& s, const T& A, const T* V, T& N, T& D) {
-  N = dot(V, V) - s.w0 * A * 4;
+template <bool kWeighted = true, class T> void triangle_size(const Local<T>& s, const T& A, const T* V, T& N, T& D) {
+  N = minus_weight<kWeighted>(s, dot(V, V), A);
   D = A * 4;
 }
 
-template <class T> void size_terms(const Local<T>& s, T& N, T& D) {
+template <bool kWeighted = true, class T> void size_terms(const Local<T>& s, T& N, T& D) {
   const auto& u = s.u;
   if (s.k == 0) {
     N = T(0) - s.w0;
     D = T(1);
   } else if (s.k == 1) {
     const T L = dot(u[0], u[0]);
-    const T h = L - s.dw[0];
-    N = h * h - s.w0 * L * 4;
+    const T h = kWeighted ? T(L - s.dw[0]) : L;
+    N = minus_weight<kWeighted>(s, T(h * h), L);
     D = L * 4;
   } else if (s.k == 2) {
     T n[3], A, V[3];
-    triangle_plane(s, n, A, V);
-    triangle_size(s, A, V, N, D);
+    triangle_plane<kWeighted>(s, n, A, V);
+    triangle_size<kWeighted>(s, A, V, N, D);
   } else {
     T c[3][3], m[3];
     cross(u[1], u[2], c[0]);
     cross(u[2], u[0], c[1]);
     cross(u[0], u[1], c[2]);
     const T det = dot(u[0], c[0]);
-    const T h0 = lifted(s, 0), h1 = lifted(s, 1), h2 = lifted(s, 2);
+    const T h0 = lifted<kWeighted>(s, 0), h1 = lifted<kWeighted>(s, 1), h2 = lifted<kWeighted>(s, 2);
     for (int a = 0; a < 3; ++a) m[a] = h0 * c[0][a] + h1 * c[1][a] + h2 * c[2][a];
     const T det2 = det * det;
-    N = dot(m, m) - s.w0 * det2 * 4;
+    N = minus_weight<kWeighted>(s, dot(m, m), det2);
     D = det2 * 4;
   }
 }
@@ -698,7 +708,8 @@ template <bool kFma> std::optional<double> rounded_twin(const SizeKernel& kernel
   }
   if (!ok) return std::nullopt;
   Twin N, D;
-  size_terms(l, N, D);
+  if (w) size_terms(l, N, D);
+  else size_terms<false>(l, N, D);
   const double eN = kTwinN[l.k] * N.p * kTwinSlack, eD = kTwinD[l.k] * D.p * kTwinSlack;
   // D certainly positive, and the candidates and h D away from under- and overflow.
   if (!(D.hi - eD > 0) || !in_twin_range(D.hi, 0x1p-500, 0x1p500)) return std::nullopt;
