@@ -51,7 +51,7 @@ int run_delaunay(const DelaunayOptions& opt) {
   const std::size_t n = input.points.size();
 
   Stopwatch build_time;
-  const auto tri = triangulate(std::move(input), opt.input.file);
+  const auto tri = triangulate(std::move(input), opt.input.file, opt.input.threads);
   const alpha::Triangulation& t = *tri;
   const double build_s = build_time.seconds();
 
@@ -104,6 +104,7 @@ Subcommand add_delaunay_command(CLI::App& app) {
   auto opt = std::make_shared<DelaunayOptions>();
   CLI::App* sub = app.add_subcommand("delaunay", "Build the Delaunay (or regular) triangulation of a point or structure file");
   add_input_options(*sub, opt->input);
+  add_threads_option(*sub, opt->input.threads);
   sub->add_flag("--check", opt->check, "Verify the triangulation exactly; exit code 1 if it is invalid");
   sub->add_flag("--json", opt->json, "Print one JSON object on stdout instead of a summary");
   return {sub, [opt] { return run_delaunay(*opt); }};

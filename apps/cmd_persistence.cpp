@@ -93,6 +93,7 @@ Subcommand add_persistence_command(CLI::App& app) {
       "printed so that they read back as the same double; death_sq is 'inf' for a class that never dies. "
       "Pairs born and dying at the same value are left out. Sorted by dim, birth, death.");
   add_input_options(*sub, *opt);
+  add_threads_option(*sub, opt->threads);
   return {sub, [opt] { return run_persistence(*opt); }};
 }
 

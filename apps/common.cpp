@@ -93,6 +93,14 @@ void add_input_options(CLI::App& sub, InputOptions& opt) {
   opt.structure_only = add_structure_options(sub, opt.structure, opt.probe);
 }
 
+void add_threads_option(CLI::App& sub, unsigned& threads) {
+  sub.add_option("-j,--jobs", threads,
+                 "Threads building the triangulation, from 2^15 points on (the output is the same for any number)")
+      ->capture_default_str()
+      ->type_name("N")
+      ->check(CLI::Range(1u, 254u).description(""));
+}
+
 std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::StructureOptions& selection,
                                                       double& probe) {
   const std::string group = "Structure files";
@@ -246,9 +254,9 @@ PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms)
   return {std::move(balls.points), std::move(balls.weights)};
 }
 
-std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file) {
+std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file, unsigned threads) {
   return naming_file(file, [&] {
-    return std::make_unique<alpha::Triangulation>(std::move(input.points), std::move(input.weights));
+    return std::make_unique<alpha::Triangulation>(std::move(input.points), std::move(input.weights), threads);
   });
 }
 
@@ -257,7 +265,7 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
   PointSet points = read_input(opt);
   in.points = points.points.size();
   Stopwatch build_time;
-  in.triangulation = triangulate(std::move(points), opt.file);
+  in.triangulation = triangulate(std::move(points), opt.file, opt.threads);
   spdlog::info("{} triangulation: {:.3f} s, {} vertices, {} finite cells",
                in.triangulation->weighted() ? "regular" : "Delaunay", build_time.seconds(),
                in.triangulation->num_vertices(), in.triangulation->num_finite_cells());

@@ -33,6 +33,7 @@ struct InputOptions {
   bool weighted = false;                 // point files: x y z r per line
   molecule::StructureOptions structure;  // structure files: which atoms
   double probe = kDefaultProbe;          // structure files: atom i is (x_i, (r_i + probe)^2)
+  unsigned threads = 1;                  // the triangulation's (add_threads_option)
   // The options that only apply to structure files, to reject them when
   // FILE is a point file.
   std::vector<const CLI::Option*> structure_only;
@@ -41,6 +42,10 @@ struct InputOptions {
 // Adds the positional FILE (required), --weighted, and the structure file
 // options (add_structure_options).
 void add_input_options(CLI::App& sub, InputOptions& opt);
+
+// Adds -j/--jobs N, the triangulation's threads, to the commands whose
+// printed results do not depend on how its cells are numbered.
+void add_threads_option(CLI::App& sub, unsigned& threads);
 
 // Adds --probe, --model, --chains, --keep-hydrogens, --keep-waters and
 // --keep-hetero[=CODES], --keep-cofactors (help group "Structure files"); returns them.
@@ -98,7 +103,7 @@ auto naming_file(const std::string& file, F&& build) {
 
 // The triangulation of the points; library errors about the input (too few
 // distinct points, all coplanar, ...) are rethrown naming the file.
-std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file);
+std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file, unsigned threads = 1);
 
 // FILE read, triangulated and turned into its alpha complex, with timings
 // logged. The complex refers to the triangulation: keep both together.

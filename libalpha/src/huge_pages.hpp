@@ -24,15 +24,15 @@ inline void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]
 }
 
 // v.reserve(n), the new storage advised before anything touches it.
-template <class T>
-void reserve_huge(std::vector<T>& v, std::size_t n) {
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
 // v.assign(n, value) into advised storage.
-template <class T>
-void assign_huge(std::vector<T>& v, std::size_t n, const T& value = T()) {
+template <class T, class A>
+void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value = T()) {
   v.clear();
   reserve_huge(v, n);
   v.assign(n, value);

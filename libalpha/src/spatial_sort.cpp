@@ -79,6 +79,15 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<
   return keys;
 }
 
+std::vector<std::size_t> brio_rounds(std::size_t n) {
+  // Rounds [n/8^(k+1), n/8^k): the first few points form the coarsest round.
+  std::vector<std::size_t> cuts{n};
+  while (cuts.back() > 256) cuts.push_back(cuts.back() / 8);
+  cuts.push_back(0);
+  std::reverse(cuts.begin(), cuts.end());
+  return cuts;
+}
+
 std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> order,
                               std::uint64_t seed) {
   // Keys first, while the points are read in order (cache friendly), then
@@ -88,12 +97,9 @@ std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> o
   for (std::size_t i = 0; i < order.size(); ++i) items[i] = {keys[i], order[i]};
   SplitMix64 rng{seed};
   for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[rng.next() % i]);
-  // Rounds [n/8^(k+1), n/8^k): the first few points form the coarsest round.
-  std::vector<std::size_t> cuts{items.size()};
-  while (cuts.back() > 256) cuts.push_back(cuts.back() / 8);
-  cuts.push_back(0);
-  for (std::size_t r = cuts.size() - 1; r > 0; --r)
-    std::sort(items.begin() + std::ptrdiff_t(cuts[r]), items.begin() + std::ptrdiff_t(cuts[r - 1]));
+  const std::vector<std::size_t> cuts = brio_rounds(items.size());
+  for (std::size_t r = 1; r < cuts.size(); ++r)
+    std::sort(items.begin() + std::ptrdiff_t(cuts[r - 1]), items.begin() + std::ptrdiff_t(cuts[r]));
   for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].second;
   return order;
 }

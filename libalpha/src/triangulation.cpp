@@ -2,7 +2,12 @@
 #include "alpha/triangulation.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
+#include <exception>
+#include <memory>
+#include <thread>
+#include <utility>
 
 #include <cmath>
 #include <numeric>
@@ -74,6 +79,14 @@ int spanning_points(Kernel& kernel, const std::vector<Vec3>& p, const std::vecto
   return 3;
 }
 
+// f(t, begin, end) on `threads` threads t, [0, n) cut into equal ranges.
+template <class F>
+void in_parallel(unsigned threads, std::size_t n, F f) {
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back([&f, t, threads, n] { f(t, n * t / threads, n * (t + 1) / threads); });
+  f(0u, std::size_t(0), n / threads);
+}
+
 }  // namespace
 
 int affine_dimension(const std::vector<Vec3>& points) {
@@ -84,16 +97,44 @@ int affine_dimension(const std::vector<Vec3>& points) {
   return spanning_points(kernel, points, order, first);
 }
 
+// The points in insertion order, shared by the builders of one triangulation:
+// a vertex id is a position in that order (input[id] is its input index,
+// which also orders the perturbation) until finish() writes the input
+// indices into the cells.
+struct InsertionOrder {
+  std::vector<Index> input;
+  std::vector<Vec3> points;
+  std::vector<double> weights;  // weighted input only
+};
+
+// What the builders of a parallel construction share: a cell array of fixed
+// size, whose unused ids are handed out in chunks, and a lock per cell.
+struct SharedCells {
+  static constexpr std::uint8_t kFree = 0, kDead = 255;  // else 1 + the holder's number
+  std::unique_ptr<std::atomic<std::uint8_t>[]> lock;
+  std::atomic<std::size_t> next{0};  // the first id not handed out
+  std::size_t capacity = 0;
+};
+
 // The incremental construction; lives only while the triangulation is built.
 // It works on a copy of the points in insertion order, so that consecutive
-// insertions read nearby memory: a vertex id is a position in that order
-// (input_[id] is its input index, which also orders the perturbation) until
-// finish() writes the input indices into the cells.
+// insertions read nearby memory.
+//
+// With threads, the coarse rounds of the insertion order (about n/64 points,
+// whose cavities span the whole set) are inserted sequentially, then each
+// later round is cut into as many stretches of its curve order as there are
+// threads, one builder each. A builder locks every cell it reads (the walk
+// hand over hand, the cavity and its boundary all at once) with a
+// non-blocking try: when another builder holds one, the point is left for a
+// sequential pass at the end. So each insertion sees and replaces a valid
+// triangulation, and the result is the unique regular triangulation of the
+// perturbed points, numbered in a canonical order (finish()): the same for any
+// thread count and timing.
 class Triangulation::Builder {
 public:
-  explicit Builder(Triangulation& t) : t_(t) {}
+  Builder(Triangulation& t, InsertionOrder& o) : t_(t), o_(o) {}
 
-  void run() {
+  void run(unsigned threads) {
     const std::vector<Index> reps = merge_duplicates();
     if (reps.size() < 4)
       fail("need at least 4 distinct points, got " + std::to_string(reps.size()));
@@ -103,19 +144,17 @@ public:
     // The cell array is written at random places as it fills.
     reserve_huge(cells_, expected);
     cell_mark_.assign(expected, 0);
-    input_ = brio_order(t_.points_, reps);
-    points_.reserve(input_.size());
-    for (Index i : input_) points_.push_back(t_.points_[i]);
+    o_.input = brio_order(t_.points_, reps);
+    o_.points.reserve(o_.input.size());
+    for (Index i : o_.input) o_.points.push_back(t_.points_[i]);
     if (t_.weighted())
-      for (Index i : input_) weights_.push_back(t_.weights_[i]);
-    kernel_ = Kernel(points_.data(), weights_.empty() ? nullptr : weights_.data(), input_.data());
-    const std::array<Index, 4> first = initial_simplex();
-    Index hint = 0;
-    for (Index p = 0; p < points_.size(); ++p) {
-      if (p == first[0] || p == first[1] || p == first[2] || p == first[3]) continue;
-      hint = insert(p, hint);
-    }
-    finish();
+      for (Index i : o_.input) o_.weights.push_back(t_.weights_[i]);
+    kernel_ = Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+    first_ = initial_simplex();
+    const bool parallel = threads > 1 && o_.points.size() >= kMinParallel;
+    if (parallel) insert_parallel(threads);
+    else insert_range(0, o_.points.size(), 0);
+    finish(parallel ? threads : 1);
   }
 
 private:
@@ -142,13 +181,16 @@ private:
       {{{0, 1, 3}, {1, 3, 0}, {3, 0, 1}}},
       {{{0, 2, 1}, {1, 0, 2}, {2, 1, 0}}},
   }};
+  // Below this many points threads do not pay (and a point set has few
+  // points beyond its coarse rounds).
+  static constexpr std::size_t kMinParallel = 1 << 15;
+  static constexpr std::size_t kChunk = 4096;  // cell ids a builder takes at a time
 
   Triangulation& t_;
-  std::vector<Index> input_;    // input index of each vertex id
-  std::vector<Vec3> points_;    // point of each vertex id
-  std::vector<double> weights_; // its weight (weighted input only)
-  Kernel kernel_{nullptr, nullptr};  // on points_, once they are copied
-  std::vector<Cell>& cells_ = t_.cells_;
+  InsertionOrder& o_;
+  Kernel kernel_{nullptr, nullptr};  // on o_.points, once they are copied
+  std::array<Index, 4> first_{};     // the initial simplex
+  decltype(t_.cells_)& cells_ = t_.cells_;
   std::vector<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
   std::uint32_t stamp_ = 2;
   std::vector<Index> free_cells_, conflict_, stack_;
@@ -157,6 +199,16 @@ private:
   std::vector<std::uint32_t> vertex_mark_;
   std::vector<Index> cavity_vertices_;
   std::uint32_t walk_rng_ = 0x9e3779b9u;
+  // Parallel construction only.
+  SharedCells* shared_ = nullptr;
+  std::uint8_t me_ = 0;                 // this builder's lock value
+  std::vector<Index> locked_;           // the cells it holds
+  std::size_t chunk_next_ = 0, chunk_end_ = 0;  // its unused chunk of ids
+  std::array<Index, 8> recent_{};       // cells it made lately: walks start there
+  std::size_t made_count_ = 0;
+  std::vector<Index> deferred_;         // points left for the sequential pass
+  bool stopped_ = false;                // out of cell ids: defers the rest
+  PredicateStats other_stats_;          // the other builders' counts
 
   // Groups equal points through a hash table of their coordinates (no sort:
   // its comparisons are unpredictable branches and scattered reads). Returns
@@ -197,10 +249,10 @@ private:
   }
 
   std::array<Index, 4> initial_simplex() {
-    std::vector<Index> order(points_.size());
+    std::vector<Index> order(o_.points.size());
     std::iota(order.begin(), order.end(), Index(0));
     std::array<Index, 4> v;
-    const int dimension = spanning_points(kernel_, points_, order, v);
+    const int dimension = spanning_points(kernel_, o_.points, order, v);
     if (dimension == 1) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
     if (dimension == 2) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
     if (kernel_.orient3d(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
@@ -225,6 +277,123 @@ private:
     return v;
   }
 
+  bool is_first(Index p) const { return p == first_[0] || p == first_[1] || p == first_[2] || p == first_[3]; }
+
+  // Inserts the points at positions [begin, end); returns the last hint.
+  Index insert_range(std::size_t begin, std::size_t end, Index hint) {
+    for (Index p = Index(begin); p < end; ++p)
+      if (!is_first(p)) hint = insert<false>(p, hint);
+    return hint;
+  }
+
+  void insert_parallel(unsigned threads) {
+    const std::size_t n = o_.points.size();
+    const std::vector<std::size_t> rounds = brio_rounds(n);
+    std::size_t r0 = 1;  // the first round inserted in parallel
+    while (rounds[r0] < n / 64) ++r0;
+    const Index hint = insert_range(0, rounds[r0], 0);
+
+    SharedCells shared;
+    // Room for the cells, the builders' unused chunks and free cells; a
+    // builder that finds none left defers its other points.
+    shared.capacity = cells_.capacity() + n / 8 + kChunk * 4 * threads;
+    reserve_huge(cells_, shared.capacity);
+    shared.next = cells_.size();
+    cells_.resize(shared.capacity);
+    shared.lock = std::make_unique<std::atomic<std::uint8_t>[]>(shared.capacity);
+    for (Index c : free_cells_) shared.lock[c].store(SharedCells::kDead, std::memory_order_relaxed);
+
+    std::vector<std::unique_ptr<Builder>> workers;
+    for (unsigned w = 0; w < threads; ++w) {
+      auto b = std::make_unique<Builder>(t_, o_);
+      b->kernel_ = Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+      b->first_ = first_;
+      b->shared_ = &shared;
+      b->me_ = std::uint8_t(w + 1);
+      b->recent_.fill(hint);
+      workers.push_back(std::move(b));
+    }
+    workers[0]->free_cells_ = std::move(free_cells_);
+    free_cells_.clear();
+
+    std::vector<std::exception_ptr> errors(threads);
+    auto work = [&](unsigned w) {
+      try {
+        workers[w]->insert_share(rounds, r0, w, threads);
+      } catch (...) {
+        errors[w] = std::current_exception();
+      }
+    };
+    {
+      std::vector<std::jthread> pool;
+      for (unsigned w = 1; w < threads; ++w) pool.emplace_back(work, w);
+      work(0);
+    }
+    for (const auto& e : errors)
+      if (e) std::rethrow_exception(e);
+
+    // Back to one builder: the cells in use so far, the free ones, the points left.
+    const std::size_t used = std::min(shared.next.load(), shared.capacity);
+    std::vector<Index> left;
+    for (const auto& b : workers) {
+      for (Index c = Index(b->chunk_next_); c < b->chunk_end_; ++c) b->free_cells_.push_back(c);
+      for (Index c : b->free_cells_) {
+        free_cells_.push_back(c);
+        shared.lock[c].store(SharedCells::kDead, std::memory_order_relaxed);
+      }
+      left.insert(left.end(), b->deferred_.begin(), b->deferred_.end());
+      other_stats_ += b->kernel_.stats();
+    }
+    for (Index c = Index(used); c < shared.capacity; ++c) free_cells_.push_back(c);
+    if (left.empty()) return;
+    // Builder 0's marks cover the whole array (stamps only grow).
+    cell_mark_ = std::move(workers[0]->cell_mark_);
+    stamp_ = workers[0]->stamp_ + 2;
+    std::sort(left.begin(), left.end());
+    Index start = kNone;
+    for (const auto& b : workers)
+      for (Index c : b->recent_)
+        if (start == kNone && shared.lock[c].load(std::memory_order_relaxed) != SharedCells::kDead) start = c;
+    for (Index c = 0; start == kNone; ++c)
+      if (c < used && shared.lock[c].load(std::memory_order_relaxed) != SharedCells::kDead) start = c;
+    for (Index p : left) start = insert<false>(p, start);
+  }
+
+  // A builder's share of the parallel rounds: stretch w of T of each.
+  void insert_share(const std::vector<std::size_t>& rounds, std::size_t r0, unsigned w, unsigned T) {
+    cell_mark_.assign(shared_->capacity, 0);
+    Index hint = recent_[0];
+    for (std::size_t r = r0; r + 1 < rounds.size(); ++r) {
+      const std::size_t b = rounds[r], size = rounds[r + 1] - b;
+      for (Index p = Index(b + size * w / T); p < b + size * (w + 1) / T; ++p) {
+        if (is_first(p)) continue;
+        if (stopped_) deferred_.push_back(p);
+        else hint = insert<true>(p, hint);
+      }
+    }
+  }
+
+  bool try_lock(Index c) {
+    std::uint8_t expected = SharedCells::kFree;
+    return shared_->lock[c].compare_exchange_strong(expected, me_, std::memory_order_acquire,
+                                                    std::memory_order_relaxed);
+  }
+  void unlock(Index c) { shared_->lock[c].store(SharedCells::kFree, std::memory_order_release); }
+  bool acquire(Index c) {
+    if (!try_lock(c)) return false;
+    locked_.push_back(c);
+    return true;
+  }
+  // Lets go of every held cell; the cells freed by this insertion from
+  // free_cells_[dead_from] on are dead (a walk must not start there).
+  void release(std::size_t dead_from) {
+    for (std::size_t k = dead_from; k < free_cells_.size(); ++k)
+      shared_->lock[free_cells_[k]].store(SharedCells::kDead, std::memory_order_relaxed);
+    for (Index c : locked_)
+      if (shared_->lock[c].load(std::memory_order_relaxed) == me_) unlock(c);
+    locked_.clear();
+  }
+
   int index_of(Index c, Index v) const {
     const auto& cv = cells_[c].v;
     for (int k = 0; k < 4; ++k)
@@ -243,49 +412,92 @@ private:
   }
 
   // Visibility walk from `start` to a cell whose closure holds p (for a point
-  // outside the hull: an infinite cell whose hull facet sees p).
+  // outside the hull: an infinite cell whose hull facet sees p). Shared: the
+  // walk holds the cell it reads and returns the located cell held, or kNone
+  // (nothing held) where another builder holds the way.
+  template <bool kShared>
   Index locate(Index p, Index start) {
     Index c = start, previous = kNone;
+    if constexpr (kShared) {  // the hint, else a cell made lately (another builder may have replaced it)
+      c = try_lock(start) ? start : kNone;
+      for (std::size_t k = 0; c == kNone && k < recent_.size(); ++k)
+        if (try_lock(recent_[k])) c = recent_[k];
+      if (c == kNone) return kNone;
+    }
     for (;;) {
       const Cell& cell = cells_[c];
       const int inf = index_of(c, kInfinite);
+      Index next = kNone;
       if (inf >= 0) {
         const auto& f = kFacet[inf];
         if (kernel_.orient3d(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], p) > 0) return c;
-        previous = c, c = cell.n[inf];
-        continue;
+        next = cell.n[inf];
+      } else {
+        walk_rng_ ^= walk_rng_ << 13, walk_rng_ ^= walk_rng_ >> 17, walk_rng_ ^= walk_rng_ << 5;
+        const int r = static_cast<int>(walk_rng_ & 3u);
+        for (int j = 0; j < 4 && next == kNone; ++j) {
+          const int i = (r + j) & 3;
+          if (cell.n[i] == previous) continue;
+          const auto& f = kFacet[i];
+          if (kernel_.orient3d(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], p) < 0) next = cell.n[i];
+        }
+        if (next == kNone) return c;
       }
-      walk_rng_ ^= walk_rng_ << 13, walk_rng_ ^= walk_rng_ >> 17, walk_rng_ ^= walk_rng_ << 5;
-      const int r = static_cast<int>(walk_rng_ & 3u);
-      Index next = kNone;
-      for (int j = 0; j < 4 && next == kNone; ++j) {
-        const int i = (r + j) & 3;
-        if (cell.n[i] == previous) continue;
-        const auto& f = kFacet[i];
-        if (kernel_.orient3d(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], p) < 0) next = cell.n[i];
+      if constexpr (kShared) {
+        const bool held = try_lock(next);
+        unlock(c);
+        if (!held) return kNone;
       }
-      if (next == kNone) return c;
       previous = c, c = next;
     }
   }
 
-  // Inserts p; returns a live cell near p to start the next walk.
+  // Inserts p; returns a live cell near p to start the next walk. Shared:
+  // a point whose cells another builder holds is deferred.
+  template <bool kShared>
   Index insert(Index p, Index hint) {
-    if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
-    const Index start = locate(p, hint);
+    if constexpr (!kShared)
+      if (cell_mark_.size() < cells_.size()) cell_mark_.resize(cells_.size() * 2, 0);
+    const Index start = locate<kShared>(p, hint);
+    if constexpr (kShared) {
+      if (start == kNone) return defer(p, hint);
+      locked_.push_back(start);
+    }
     stamp_ += 2;
     if (!conflict(cells_[start], p)) {
-      t_.status_[input_[p]] = PointStatus::hidden;
+      t_.status_[o_.input[p]] = PointStatus::hidden;
+      if constexpr (kShared) release(free_cells_.size());
       return start;
     }
-    find_cavity(start, p);
+    if constexpr (kShared)
+      if (!find_cavity<true>(start, p)) return defer(p, start);
+    if constexpr (!kShared) find_cavity<false>(start, p);
     if (t_.weighted()) mark_cavity_vertices();
-    const Index made = fill_cavity();
+    const std::size_t dead_from = free_cells_.size();
+    const Index made = fill_cavity<kShared>();
+    if constexpr (kShared)
+      if (made == kNone) {
+        stopped_ = true;
+        return defer(p, start);
+      }
     if (t_.weighted()) hide_enclosed_vertices();
+    if constexpr (kShared) {
+      release(dead_from);
+      recent_[made_count_++ % recent_.size()] = made;
+    }
     return made;
   }
 
-  void find_cavity(Index start, Index p) {
+  Index defer(Index p, Index hint) {
+    release(free_cells_.size());
+    deferred_.push_back(p);
+    return hint;
+  }
+
+  // Collects the cells in conflict with p and the cavity's boundary facets.
+  // Shared: false (and nothing changed) if another builder holds one of them.
+  template <bool kShared>
+  bool find_cavity(Index start, Index p) {
     conflict_.clear(), boundary_.clear(), stack_.clear();
     // Nothing here resizes the cells or their marks.
     const Cell* const cells = cells_.data();
@@ -300,10 +512,13 @@ private:
       for (int i = 0; i < 4; ++i) {
         const Index n = cells[c].n[i];
         if (mark[n] == in) continue;
-        if (mark[n] != out && conflict(cells[n], p)) {
-          mark[n] = in;
-          stack_.push_back(n);
-          continue;
+        if (mark[n] != out) {
+          if (kShared && !acquire(n)) return false;
+          if (conflict(cells[n], p)) {
+            mark[n] = in;
+            stack_.push_back(n);
+            continue;
+          }
         }
         mark[n] = out;
         Facet f{cells[c].v, i, n, index_of_neighbor(n, c)};
@@ -311,6 +526,7 @@ private:
         boundary_.push_back(f);
       }
     }
+    return true;
   }
 
   int index_of_neighbor(Index c, Index n) const {
@@ -320,12 +536,32 @@ private:
     return -1;
   }
 
+  // Shared: makes sure free cells and the chunk hold `wanted` ids (the
+  // rest of a too small chunk goes to the free cells); false when the
+  // shared array has no more.
+  bool reserve_ids(std::size_t wanted) {
+    if (free_cells_.size() + conflict_.size() + (chunk_end_ - chunk_next_) >= wanted) return true;
+    for (std::size_t c = chunk_next_; c < chunk_end_; ++c) free_cells_.push_back(Index(c));
+    const std::size_t size = std::max(kChunk, wanted);
+    const std::size_t base = shared_->next.fetch_add(size, std::memory_order_relaxed);
+    if (base + size > shared_->capacity) {
+      for (std::size_t c = base; c < shared_->capacity; ++c) free_cells_.push_back(Index(c));
+      chunk_next_ = chunk_end_ = 0;
+      return false;
+    }
+    chunk_next_ = base, chunk_end_ = base + size;
+    return true;
+  }
+
   // Replaces the conflict cells by p joined to each boundary facet: the
   // free cells first (last freed first), then new ids in increasing order.
+  // Shared: kNone (nothing changed) when the shared array is full.
+  template <bool kShared>
   Index fill_cavity() {
+    if (kShared && !reserve_ids(boundary_.size())) return kNone;
     for (Index c : conflict_) free_cells_.push_back(c);
-    Index next_new = static_cast<Index>(cells_.size());
-    if (boundary_.size() > free_cells_.size()) {
+    Index next_new = static_cast<Index>(kShared ? chunk_next_ : cells_.size());
+    if (!kShared && boundary_.size() > free_cells_.size()) {
       const std::size_t size = cells_.size() + boundary_.size() - free_cells_.size();
       // Cell ids are 32-bit, kNone and kInfinite reserved (some 6e8 points).
       if (size > kInfinite) fail("too many cells for 32-bit cell ids", ErrorKind::LimitExceeded);
@@ -345,6 +581,11 @@ private:
       if (!free_cells_.empty()) {
         c = free_cells_.back();
         free_cells_.pop_back();
+        // A dead cell (or an unused id) is held from now on: a stale hint may name it.
+        if (kShared && shared_->lock[c].load(std::memory_order_relaxed) != me_) {
+          shared_->lock[c].store(me_, std::memory_order_relaxed);
+          locked_.push_back(c);
+        }
       } else {
         c = next_new++;
       }
@@ -373,13 +614,14 @@ private:
       }
       made = c;
     }
+    if constexpr (kShared) chunk_next_ = next_new;
     return made;
   }
 
   // Weighted points only: a vertex of the conflict cells that no boundary
   // facet keeps lies inside the cavity, and the new point hides it.
   void mark_cavity_vertices() {
-    if (vertex_mark_.size() < points_.size()) vertex_mark_.assign(points_.size(), 0);
+    if (vertex_mark_.size() < o_.points.size()) vertex_mark_.assign(o_.points.size(), 0);
     cavity_vertices_.clear();
     for (Index c : conflict_)
       for (Index v : cells_[c].v)
@@ -390,26 +632,93 @@ private:
       for (Index v : f.v)
         if (v != kInfinite) vertex_mark_[v] = stamp_ + 1;
     for (Index v : cavity_vertices_)
-      if (vertex_mark_[v] == stamp_) t_.status_[input_[v]] = PointStatus::hidden;
+      if (vertex_mark_[v] == stamp_) t_.status_[o_.input[v]] = PointStatus::hidden;
+  }
+
+  // The canonical numbering of a parallel construction: each cell's
+  // vertices sorted (the first two swapped when that takes an odd
+  // permutation, to keep the orientation), the cells by their last finite
+  // vertex in insertion order (the point whose insertion made them, so the
+  // order follows where the builders stored them), then by their sorted
+  // vertex lists. remap[c] is kNone for unused cells, else set to c's
+  // number; returns the number of cells.
+  std::size_t canonical_numbers(std::vector<Index>& remap, unsigned threads) {
+    const std::size_t n = o_.points.size();
+    const auto last = [](const Cell& cell) { return cell.v[3] == kInfinite ? cell.v[2] : cell.v[3]; };
+    const auto sorted_vertices = [](const Cell& cell) {
+      const auto& v = cell.v;
+      return std::array<Index, 4>{std::min(v[0], v[1]), std::max(v[0], v[1]), v[2], v[3]};
+    };
+    // Cells by their last vertex, counted per thread.
+    std::vector<std::vector<Index>> count(threads, std::vector<Index>(n, 0));
+    in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c) {
+        if (remap[c] == kNone) continue;
+        Cell& cell = cells_[c];
+        bool odd = false;
+        for (int i = 1; i < 4; ++i)  // insertion sort, the neighbours along
+          for (int k = i; k > 0 && cell.v[k - 1] > cell.v[k]; --k) {
+            std::swap(cell.v[k - 1], cell.v[k]);
+            std::swap(cell.n[k - 1], cell.n[k]);
+            odd = !odd;
+          }
+        if (odd) std::swap(cell.v[0], cell.v[1]), std::swap(cell.n[0], cell.n[1]);
+        ++count[t][last(cell)];
+      }
+    });
+    Index total = 0;  // count[t][v]: where thread t's cells of vertex v go
+    for (std::size_t v = 0; v < n; ++v)
+      for (auto& c : count) total += std::exchange(c[v], total);
+    std::vector<Index, UninitializedAllocator<Index>> sorted;
+    reserve_huge(sorted, total);
+    sorted.resize(total);
+    in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c)
+        if (remap[c] != kNone) sorted[count[t][last(cells_[c])]++] = Index(c);
+    });
+    // count.back()[v] is now where v's cells end; sort each run by vertices.
+    const std::vector<Index>& ends = count.back();
+    in_parallel(threads, n, [&](unsigned, std::size_t begin, std::size_t end) {
+      for (std::size_t v = begin; v < end; ++v)
+        for (std::size_t i = v == 0 ? 0 : ends[v - 1], e = ends[v], j = i + 1; j < e; ++j)
+          for (std::size_t k = j; k > i && sorted_vertices(cells_[sorted[k]]) < sorted_vertices(cells_[sorted[k - 1]]); --k)
+            std::swap(sorted[k], sorted[k - 1]);
+      for (std::size_t k = begin == 0 ? 0 : ends[begin - 1]; k < (end == 0 ? 0 : ends[end - 1]); ++k) remap[sorted[k]] = Index(k);
+    });
+    return total;
   }
 
   // Drops unused cell slots, gives the vertices their input indices and
-  // fills in counts and vertex-to-cell links.
-  void finish() {
+  // fills in counts and vertex-to-cell links. With threads (a parallel
+  // construction), in the canonical order.
+  void finish(unsigned threads) {
     std::vector<Index> remap(cells_.size(), 0);
     for (Index c : free_cells_) remap[c] = kNone;
-    Index next = 0;
-    for (Index c = 0; c < cells_.size(); ++c)
-      if (remap[c] != kNone) remap[c] = next++;
-    for (Index c = 0; c < cells_.size(); ++c) {
-      if (remap[c] == kNone) continue;
-      Cell cell = cells_[c];
+    const auto renumbered = [&](Cell cell) {
       for (Index& n : cell.n) n = remap[n];
       for (Index& v : cell.v)
-        if (v != kInfinite) v = input_[v];
-      cells_[remap[c]] = cell;
+        if (v != kInfinite) v = o_.input[v];
+      return cell;
+    };
+    if (threads > 1) {
+      const std::size_t count = canonical_numbers(remap, threads);
+      decltype(t_.cells_) numbered;
+      reserve_huge(numbered, count);
+      numbered.resize(count);
+      in_parallel(threads, cells_.size(), [&](unsigned, std::size_t begin, std::size_t end) {
+        for (std::size_t c = begin; c < end; ++c)
+          if (remap[c] != kNone) numbered[remap[c]] = renumbered(cells_[c]);
+      });
+      cells_.swap(numbered);
+    } else {
+      Index next = 0;
+      for (Index c = 0; c < cells_.size(); ++c)
+        if (remap[c] != kNone) remap[c] = next++;
+      // remap[c] <= c: each cell moves down, onto one already moved.
+      for (Index c = 0; c < cells_.size(); ++c)
+        if (remap[c] != kNone) cells_[remap[c]] = renumbered(cells_[c]);
+      cells_.resize(next);
     }
-    cells_.resize(next);
     t_.vertex_cell_.assign(t_.points_.size(), kNone);
     for (Index c = 0; c < cells_.size(); ++c) {
       bool finite = true;
@@ -424,13 +733,15 @@ private:
       t_.num_vertices_ += s == PointStatus::vertex;
     }
     t_.stats_ = kernel_.stats();
+    t_.stats_ += other_stats_;
   }
 };
 
-Triangulation::Triangulation(std::vector<Vec3> points, std::vector<double> weights)
+Triangulation::Triangulation(std::vector<Vec3> points, std::vector<double> weights, unsigned threads)
     : points_(std::move(points)), weights_(std::move(weights)) {
   check_input(points_, weights_);
-  Builder(*this).run();
+  InsertionOrder order;
+  Builder(*this, order).run(std::clamp(threads, 1u, 254u));  // a builder's lock value is a byte
 }
 
 std::size_t Triangulation::memory_bytes() const {

@@ -188,6 +188,26 @@ case $case_name in
       fail "unexpected lines"
     grep -q '172 persistence pairs' "$tmp/err" || fail "pair count not logged"
     ;;
+  persistence_threads)
+    # 2^15 points or more are triangulated on -j threads: the cells are
+    # numbered otherwise, the diagram and the counts stay the same.
+    awk 'BEGIN { srand(7); for (i = 0; i < 40000; i++) printf "%.9f %.9f %.9f\n", rand(), rand(), rand() }' >"$tmp/cloud.xyz"
+    run persistence "$tmp/cloud.xyz"
+    expect_success
+    mv "$tmp/out" "$tmp/one"
+    run persistence "$tmp/cloud.xyz" -j 2
+    expect_success
+    cmp -s "$tmp/one" "$tmp/out" || fail "persistence -j 2 differs from -j 1"
+    [[ $(wc -l <"$tmp/out") -gt 100000 ]] || fail "expected the pairs of 40000 points"
+    run delaunay "$tmp/cloud.xyz" --json --check
+    expect_json_object
+    mv "$tmp/out" "$tmp/one"
+    run delaunay "$tmp/cloud.xyz" --json --check -j 3
+    expect_json valid true
+    cmp -s "$tmp/one" "$tmp/out" || fail "delaunay -j 3 differs from -j 1"
+    run persistence "$tmp/cloud.xyz" -j 0
+    [[ $rc -eq 2 ]] || fail "-j 0 should be a usage error (exit 2), got $rc"
+    ;;
   persistence_weighted)
     run persistence "$data/weighted.xyz" --weighted
     expect_success

@@ -38,6 +38,10 @@ struct StageCounts {
 struct PredicateStats {
   StageCounts orient;  // orient3d (exact zero counts as 'perturbed' = degenerate)
   StageCounts power;   // power test against a cell's orthosphere
+  PredicateStats& operator+=(const PredicateStats& o) {
+    orient += o.orient, power += o.power;
+    return *this;
+  }
 };
 
 class Kernel {

@@ -16,6 +16,10 @@ namespace alpha {
 std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> indices,
                               std::uint64_t seed = 0x5eed);
 
+// Where brio_order's rounds of n points begin, ascending: 0, ..., n. Each
+// round is sorted along the curve.
+std::vector<std::size_t> brio_rounds(std::size_t n);
+
 // 48-bit Hilbert-curve key of each index within the bounding box of the points.
 std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices);
 

@@ -22,6 +22,7 @@
 
 #include "alpha/geometry.hpp"
 #include "alpha/predicates.hpp"
+#include "alpha/uninitialized_allocator.hpp"
 
 namespace alpha {
 
@@ -52,7 +53,14 @@ public:
   // points, all points collinear or coplanar. Duplicates are merged: the
   // point with the largest weight (then the smallest index) represents the
   // others.
-  explicit Triangulation(std::vector<Vec3> points, std::vector<double> weights = {});
+  //
+  // With threads > 1 and at least 2^15 distinct points, the construction
+  // runs on that many threads. It gives the same cells as the sequential
+  // one, numbered canonically (each cell's vertices in insertion order, the
+  // cells in the order of those lists) instead of in the order the
+  // sequential insertions happened to leave them: the same numbers for any
+  // thread count above 1.
+  explicit Triangulation(std::vector<Vec3> points, std::vector<double> weights = {}, unsigned threads = 1);
 
   // Input points.
   std::size_t num_points() const { return points_.size(); }
@@ -102,7 +110,8 @@ private:
   std::vector<double> weights_;
   std::vector<PointStatus> status_;
   std::vector<Index> representative_;
-  std::vector<Cell> cells_;
+  // Written before read: growing it (or sizing it for the threads) zeroes nothing.
+  std::vector<Cell, UninitializedAllocator<Cell>> cells_;
   std::vector<Index> vertex_cell_;
   std::size_t num_vertices_ = 0, num_duplicates_ = 0, num_hidden_ = 0, num_finite_cells_ = 0;
   PredicateStats stats_;
