@@ -7,14 +7,12 @@
 #include <CGAL/Regular_triangulation_3.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "alpha/triangulation.hpp"
-#include "median.hpp"
 #include "point_sets.hpp"
 #include "rss.hpp"
 
@@ -129,24 +127,6 @@ int main() {
   std::printf("\ngrid/random time per point at 1e5: ours %.2f, CGAL %.2f\n",
               per_point(2, &Result::ours) / per_point(0, &Result::ours),
               per_point(2, &Result::cgal) / per_point(0, &Result::cgal));
-
-  // Issue 23's threading target: wall-clock time of our construction on 1
-  // and 2 threads (the same cells; see triangulation.hpp), alternating,
-  // medians of 3. CPU time would count both threads.
-  std::printf("\nthreads: wall-clock seconds, medians of 3\n%-13s %9s %9s %9s\n", "set", "1 thread", "2 threads",
-              "speed-up");
-  for (std::size_t i : {std::size_t(1), std::size_t(4)}) {
-    std::vector<double> wall[2];
-    for (int rep = 0; rep < 3; ++rep)
-      for (unsigned threads : {1u, 2u}) {
-        const auto start = std::chrono::steady_clock::now();
-        const alpha::Triangulation t(cases[i].points, cases[i].weights, threads);
-        wall[threads - 1].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      }
-    const double one = bench::median(wall[0]), two = bench::median(wall[1]);
-    std::printf("%-13s %9.3f %9.3f %9.2f\n", cases[i].name.c_str(), one, two, one / two);
-    std::fflush(stdout);
-  }
 
   std::printf("\npredicate stages (ours, one build)\n%-13s %12s %10s %10s %12s %10s %10s\n", "set", "orient filt",
               "exact", "degen", "power filt", "exact", "perturbed");

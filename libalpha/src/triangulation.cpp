@@ -116,6 +116,32 @@ struct SharedCells {
   std::size_t capacity = 0;
 };
 
+// Arrays that a parallel construction fills later, allocated and faulted
+// in on the core left idle while the points are sorted: on a fresh page
+// the first write costs about as much as the work done there.
+struct Scratch {
+  template <class T>
+  using Array = std::vector<T, UninitializedAllocator<T>>;
+  std::vector<Array<std::uint32_t>> marks;  // each builder's cell marks
+  std::vector<Array<Index>> count;          // canonical_numbers's, per thread
+  Array<Cell> numbered;                     // the cells in canonical order
+  // Two builders' marks, once they are done (no faults left to take).
+  Array<Index> remap, sorted;
+
+  void prepare(std::size_t cells, std::size_t points, unsigned threads) {
+    const auto zeroed = [](auto& array, std::size_t size) {
+      reserve_huge(array, size);
+      array.resize(size);
+      std::fill(array.begin(), array.end(), typename std::decay_t<decltype(array)>::value_type{});
+    };
+    marks.resize(threads);
+    for (auto& m : marks) zeroed(m, cells);
+    count.resize(threads);
+    for (auto& c : count) zeroed(c, points);
+    zeroed(numbered, cells);
+  }
+};
+
 // The incremental construction; lives only while the triangulation is built.
 // It works on a copy of the points in insertion order, so that consecutive
 // insertions read nearby memory.
@@ -135,15 +161,29 @@ public:
   Builder(Triangulation& t, InsertionOrder& o) : t_(t), o_(o) {}
 
   void run(unsigned threads) {
+    // A Delaunay triangulation of n random points has about 6.7 n cells;
+    // reserving avoids repeated copies and page faults while growing.
+    const auto expected_cells = [](std::size_t points) { return points * 27 / 4 + 64; };
+    if (threads > 1 && t_.points_.size() >= kMinParallel) {
+      // Sized for all points: duplicates are not known yet.
+      const std::size_t points = t_.points_.size();
+      capacity_ = expected_cells(points) + points / 8 + kChunk * 4 * threads;
+      prefault_ = std::jthread([this, points, threads] {
+        try {
+          scratch_.prepare(capacity_, points, threads);
+        } catch (...) {
+          prefault_error_ = std::current_exception();
+        }
+      });
+    }
     const std::vector<Index> reps = merge_duplicates();
     if (reps.size() < 4)
       fail("need at least 4 distinct points, got " + std::to_string(reps.size()));
-    // A Delaunay triangulation of n random points has about 6.7 n cells;
-    // reserving avoids repeated copies and page faults while growing.
-    const std::size_t expected = reps.size() * 27 / 4 + 64;
+    const std::size_t expected = expected_cells(reps.size());
+    const bool parallel = threads > 1 && reps.size() >= kMinParallel;
     // The cell array is written at random places as it fills.
     reserve_huge(cells_, expected);
-    cell_mark_.assign(expected, 0);
+    cell_mark_.assign(parallel ? expected / 16 : expected, 0);  // threads: for the coarse rounds
     o_.input = brio_order(t_.points_, reps);
     o_.points.reserve(o_.input.size());
     for (Index i : o_.input) o_.points.push_back(t_.points_[i]);
@@ -151,7 +191,6 @@ public:
       for (Index i : o_.input) o_.weights.push_back(t_.weights_[i]);
     kernel_ = Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
     first_ = initial_simplex();
-    const bool parallel = threads > 1 && o_.points.size() >= kMinParallel;
     if (parallel) insert_parallel(threads);
     else insert_range(0, o_.points.size(), 0);
     finish(parallel ? threads : 1);
@@ -191,7 +230,7 @@ private:
   Kernel kernel_{nullptr, nullptr};  // on o_.points, once they are copied
   std::array<Index, 4> first_{};     // the initial simplex
   decltype(t_.cells_)& cells_ = t_.cells_;
-  std::vector<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
+  Scratch::Array<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
   std::uint32_t stamp_ = 2;
   std::vector<Index> free_cells_, conflict_, stack_;
   std::vector<Facet> boundary_;
@@ -209,6 +248,10 @@ private:
   std::vector<Index> deferred_;         // points left for the sequential pass
   bool stopped_ = false;                // out of cell ids: defers the rest
   PredicateStats other_stats_;          // the other builders' counts
+  std::size_t capacity_ = 0;            // the size of the shared cell array
+  Scratch scratch_;
+  std::jthread prefault_;               // fills scratch_
+  std::exception_ptr prefault_error_;
 
   // Groups equal points through a hash table of their coordinates (no sort:
   // its comparisons are unpredictable branches and scattered reads). Returns
@@ -292,11 +335,14 @@ private:
     std::size_t r0 = 1;  // the first round inserted in parallel
     while (rounds[r0] < n / 64) ++r0;
     const Index hint = insert_range(0, rounds[r0], 0);
+    prefault_.join();
+    if (prefault_error_) std::rethrow_exception(prefault_error_);
 
     SharedCells shared;
-    // Room for the cells, the builders' unused chunks and free cells; a
-    // builder that finds none left defers its other points.
-    shared.capacity = cells_.capacity() + n / 8 + kChunk * 4 * threads;
+    // Room for the cells, the builders' unused chunks and free cells (the
+    // capacity_ set in run()); a builder that finds none left defers its
+    // other points.
+    shared.capacity = std::max(capacity_, cells_.size() + kChunk * 4 * threads);
     reserve_huge(cells_, shared.capacity);
     shared.next = cells_.size();
     cells_.resize(shared.capacity);
@@ -310,6 +356,8 @@ private:
       b->first_ = first_;
       b->shared_ = &shared;
       b->me_ = std::uint8_t(w + 1);
+      b->cell_mark_ = std::move(scratch_.marks[w]);
+      b->cell_mark_.resize(shared.capacity, 0);
       b->recent_.fill(hint);
       workers.push_back(std::move(b));
     }
@@ -345,10 +393,13 @@ private:
       other_stats_ += b->kernel_.stats();
     }
     for (Index c = Index(used); c < shared.capacity; ++c) free_cells_.push_back(c);
-    if (left.empty()) return;
-    // Builder 0's marks cover the whole array (stamps only grow).
+    // Builder 0's marks cover the whole array (stamps only grow); builder
+    // 1's become finish()'s remap (stamps are never kNone) and cell_mark_
+    // its sorted list.
     cell_mark_ = std::move(workers[0]->cell_mark_);
     stamp_ = workers[0]->stamp_ + 2;
+    scratch_.remap = std::move(workers[1]->cell_mark_);
+    if (left.empty()) return;
     std::sort(left.begin(), left.end());
     Index start = kNone;
     for (const auto& b : workers)
@@ -361,7 +412,6 @@ private:
 
   // A builder's share of the parallel rounds: stretch w of T of each.
   void insert_share(const std::vector<std::size_t>& rounds, std::size_t r0, unsigned w, unsigned T) {
-    cell_mark_.assign(shared_->capacity, 0);
     Index hint = recent_[0];
     for (std::size_t r = r0; r + 1 < rounds.size(); ++r) {
       const std::size_t b = rounds[r], size = rounds[r + 1] - b;
@@ -642,7 +692,7 @@ private:
   // order follows where the builders stored them), then by their sorted
   // vertex lists. remap[c] is kNone for unused cells, else set to c's
   // number; returns the number of cells.
-  std::size_t canonical_numbers(std::vector<Index>& remap, unsigned threads) {
+  std::size_t canonical_numbers(Scratch::Array<Index>& remap, unsigned threads) {
     const std::size_t n = o_.points.size();
     const auto last = [](const Cell& cell) { return cell.v[3] == kInfinite ? cell.v[2] : cell.v[3]; };
     const auto sorted_vertices = [](const Cell& cell) {
@@ -650,18 +700,20 @@ private:
       return std::array<Index, 4>{std::min(v[0], v[1]), std::max(v[0], v[1]), v[2], v[3]};
     };
     // Cells by their last vertex, counted per thread.
-    std::vector<std::vector<Index>> count(threads, std::vector<Index>(n, 0));
+    std::vector<Scratch::Array<Index>>& count = scratch_.count;
     in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c) {
         if (remap[c] == kNone) continue;
         Cell& cell = cells_[c];
         bool odd = false;
-        for (int i = 1; i < 4; ++i)  // insertion sort, the neighbours along
-          for (int k = i; k > 0 && cell.v[k - 1] > cell.v[k]; --k) {
-            std::swap(cell.v[k - 1], cell.v[k]);
-            std::swap(cell.n[k - 1], cell.n[k]);
-            odd = !odd;
-          }
+        const auto exchange = [&](int a, int b) {  // a sorting network, the neighbours along, no branches
+          const bool swap = cell.v[a] > cell.v[b];
+          const Index va = cell.v[a], vb = cell.v[b], na = cell.n[a], nb = cell.n[b];
+          cell.v[a] = swap ? vb : va, cell.v[b] = swap ? va : vb;
+          cell.n[a] = swap ? nb : na, cell.n[b] = swap ? na : nb;
+          odd ^= swap;
+        };
+        exchange(0, 1), exchange(2, 3), exchange(0, 2), exchange(1, 3), exchange(1, 2);
         if (odd) std::swap(cell.v[0], cell.v[1]), std::swap(cell.n[0], cell.n[1]);
         ++count[t][last(cell)];
       }
@@ -669,20 +721,22 @@ private:
     Index total = 0;  // count[t][v]: where thread t's cells of vertex v go
     for (std::size_t v = 0; v < n; ++v)
       for (auto& c : count) total += std::exchange(c[v], total);
-    std::vector<Index, UninitializedAllocator<Index>> sorted;
-    reserve_huge(sorted, total);
+    Scratch::Array<Index>& sorted = scratch_.sorted;
     sorted.resize(total);
     in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c)
         if (remap[c] != kNone) sorted[count[t][last(cells_[c])]++] = Index(c);
     });
     // count.back()[v] is now where v's cells end; sort each run by vertices.
-    const std::vector<Index>& ends = count.back();
+    const Scratch::Array<Index>& ends = count.back();
     in_parallel(threads, n, [&](unsigned, std::size_t begin, std::size_t end) {
-      for (std::size_t v = begin; v < end; ++v)
+      for (std::size_t v = begin; v < end; ++v) {
+        if (v + 8 < end)  // the cells are scattered: ask for a later run's ahead
+          for (std::size_t k = ends[v + 7]; k < ends[v + 8]; ++k) __builtin_prefetch(&cells_[sorted[k]]);
         for (std::size_t i = v == 0 ? 0 : ends[v - 1], e = ends[v], j = i + 1; j < e; ++j)
           for (std::size_t k = j; k > i && sorted_vertices(cells_[sorted[k]]) < sorted_vertices(cells_[sorted[k - 1]]); --k)
             std::swap(sorted[k], sorted[k - 1]);
+      }
       for (std::size_t k = begin == 0 ? 0 : ends[begin - 1]; k < (end == 0 ? 0 : ends[end - 1]); ++k) remap[sorted[k]] = Index(k);
     });
     return total;
@@ -692,7 +746,8 @@ private:
   // fills in counts and vertex-to-cell links. With threads (a parallel
   // construction), in the canonical order.
   void finish(unsigned threads) {
-    std::vector<Index> remap(cells_.size(), 0);
+    Scratch::Array<Index> remap = std::move(scratch_.remap);  // never kNone, if given
+    remap.resize(cells_.size(), 0);
     for (Index c : free_cells_) remap[c] = kNone;
     const auto renumbered = [&](Cell cell) {
       for (Index& n : cell.n) n = remap[n];
@@ -701,10 +756,9 @@ private:
       return cell;
     };
     if (threads > 1) {
-      const std::size_t count = canonical_numbers(remap, threads);
-      decltype(t_.cells_) numbered;
-      reserve_huge(numbered, count);
-      numbered.resize(count);
+      scratch_.sorted = std::move(cell_mark_);
+      Scratch::Array<Cell>& numbered = scratch_.numbered;
+      numbered.resize(canonical_numbers(remap, threads));
       in_parallel(threads, cells_.size(), [&](unsigned, std::size_t begin, std::size_t end) {
         for (std::size_t c = begin; c < end; ++c)
           if (remap[c] != kNone) numbered[remap[c]] = renumbered(cells_[c]);
