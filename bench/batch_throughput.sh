@@ -58,7 +58,7 @@ timed() {
   /usr/bin/time -f '%e %U %S %M' -o "$scratch/time" "$@" >/dev/null 2>"$scratch/stderr" || true
   awk '{ print $1, $2 + $3, $4 }' "$scratch/time"
 }
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 ours() {  # JOBS: a fresh output directory (a re-run would resume)
   rm -rf "$scratch/ours"

@@ -25,6 +25,6 @@ for f in "$dir"/*.pdb; do
   printf '%-10s %6s %10s %10s %9.3f %7s %5s\n' "$id" "$atoms" "$pockets" "$tunnels" \
     "$(awk -v t="$tunnels" -v p="$pockets" 'BEGIN { print t / p }')" "$n_t" "$n_p"
 done | tee "$tmp/rows"
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 echo "median: pockets $(awk '{ print $3 }' "$tmp/rows" | median) s, tunnels and pores $(awk '{ print $4 }' "$tmp/rows" | median) s," \
      "ratio $(awk '{ print $5 }' "$tmp/rows" | median), max tunnels and pores $(awk '{ print $4 }' "$tmp/rows" | sort -g | tail -n 1) s"

@@ -38,7 +38,7 @@ cpu() {  # COMMAND...: user + system CPU seconds
   /usr/bin/time -f '%U %S' -o "$scratch/time" "$@" >/dev/null 2>&1 || true
   awk '{ print $1 + $2 }' "$scratch/time"
 }
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 printf '%-10s %7s %9s %9s %7s\n' id atoms ours_cpu fp_cpu ratio
 : >"$scratch/rows"

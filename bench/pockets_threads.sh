@@ -14,15 +14,10 @@
 # distorts wall times: quote the load with the figures.
 set -euo pipefail
 
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=$(realpath "${1:-$root/build/apps/alphapocket}")
-reps=${REPS:-3}
-[[ -x $exe ]] || { echo "$exe: not an executable (build alphapocket first)" >&2; exit 1; }
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+bench_setup "${1:-}"
 /usr/bin/python3 "$root/bench/assembly54.py" "$root/examples/data/1a26A.pdb" "$scratch/copies54.cif"
 
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 cavities_seconds() {  # JOBS: runs the search, prints the logged cavity stage's seconds and the CPU use
   rm -rf "$scratch/j$1"
   mkdir "$scratch/j$1"

@@ -34,7 +34,7 @@ cpu() {  # FILE: user + system CPU seconds of `pockets` with its default outputs
   /usr/bin/time -f '%U %S' -o "$scratch/time" "$exe" -q pockets "$1" -o "$scratch/out" >/dev/null 2>&1 || true
   awk '{ print $1 + $2 }' "$scratch/time"
 }
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 # Atoms kept (as the analysis counts them): one batch run over both sets.
 mkdir "$scratch/in"

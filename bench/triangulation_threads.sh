@@ -17,12 +17,8 @@
 # Needs python3 and GNU time. The machine's load distorts wall times.
 set -euo pipefail
 
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=$(realpath "${1:-$root/build/apps/alphapocket}")
-reps=${REPS:-3}
-[[ -x $exe ]] || { echo "$exe: not an executable (build alphapocket first)" >&2; exit 1; }
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+bench_setup "${1:-}"
 python3 - "$scratch" <<'PY'
 import random, sys
 d = sys.argv[1]
@@ -37,7 +33,6 @@ with open(d + "/weighted.xyz", "w") as f:
         f.write("%.17g %.17g %.17g %.17g\n" % (r.random() * side, r.random() * side, r.random() * side, r.random() ** 0.5))
 PY
 
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 build_seconds() {  # SET JOBS [FLAGS]: prints the logged construction seconds and the CPU use
   /usr/bin/time -f %P -o "$scratch/cpu" "$exe" delaunay "$scratch/$1.xyz" -j "$2" "${@:3}" --json \
     >"$scratch/$1.j$2.json" 2>"$scratch/err"
