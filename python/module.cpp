@@ -193,14 +193,17 @@ py::dict surface_dict(const molecule::Surface& s) {
 }
 
 // The triangulation and its complex, owned together (the complex refers to
-// the triangulation).
+// the triangulation). threads > 1 builds the triangulation on threads (2^15
+// points or more): its cells are numbered otherwise, so shape_mesh lists
+// the same faces in another order; everything else is the same.
 class PyAlphaComplex {
 public:
-  PyAlphaComplex(const Points& points, const std::optional<Points>& weights) {
+  PyAlphaComplex(const Points& points, const std::optional<Points>& weights, unsigned threads) {
     std::vector<alpha::Vec3> p = points_of(points);
     std::vector<double> w = weights ? values_of(*weights, p.size(), "weights") : std::vector<double>();
+    if (threads < 1) throw py::value_error("threads must be at least 1");
     py::gil_scoped_release release;
-    t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w));
+    t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w), threads);
     ac_ = std::make_unique<alpha::AlphaComplex>(*t_);
   }
 
@@ -364,7 +367,8 @@ PYBIND11_MODULE(_core, m) {
   });
 
   py::class_<PyAlphaComplex>(m, "AlphaComplex")
-      .def(py::init<const Points&, const std::optional<Points>&>(), py::arg("points"), py::arg("weights") = py::none())
+      .def(py::init<const Points&, const std::optional<Points>&, unsigned>(), py::arg("points"),
+           py::arg("weights") = py::none(), py::arg("threads") = 1)
       .def_property_readonly("spectrum", &PyAlphaComplex::spectrum)
       .def("classify", &PyAlphaComplex::classify, py::arg("alpha_sq"))
       .def("betti", &PyAlphaComplex::betti, py::arg("alpha_sq"))

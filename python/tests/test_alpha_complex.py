@@ -56,3 +56,17 @@ def test_weighted_vertex_values():
     ac = alphapocket.AlphaComplex(p, weights=[1.0, 4.0, 0.0, 0.0])
     assert ac.spectrum[0] == -4.0 and -1.0 in ac.spectrum
     assert len(ac) == 4
+
+
+def test_threads_same_complex():
+    # 2^15 points or more are triangulated on the threads: the same
+    # spectrum, counts, Betti numbers, diagram and shape (faces in another order).
+    p = np.random.default_rng(5).uniform(0, 1, (40000, 3))
+    one, two = alphapocket.AlphaComplex(p), alphapocket.AlphaComplex(p, threads=2)
+    assert np.array_equal(one.spectrum, two.spectrum)
+    assert np.array_equal(one.persistence(), two.persistence())
+    alpha_sq = float(one.spectrum[len(one.spectrum) // 3])
+    assert np.array_equal(one.classify(alpha_sq), two.classify(alpha_sq))
+    assert one.betti(alpha_sq) == two.betti(alpha_sq)
+    faces = [np.sort(np.sort(ac.shape_mesh(alpha_sq)[1], axis=1), axis=0) for ac in (one, two)]
+    assert len(faces[0]) > 1000 and np.array_equal(faces[0], faces[1])
