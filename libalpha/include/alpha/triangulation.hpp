@@ -54,12 +54,13 @@ public:
   // point with the largest weight (then the smallest index) represents the
   // others.
   //
-  // With threads > 1 and at least 2^15 distinct points, the construction
-  // runs on that many threads. It gives the same cells as the sequential
-  // one, numbered canonically (each cell's vertices in insertion order, the
-  // cells in the order of those lists) instead of in the order the
-  // sequential insertions happened to leave them: the same numbers for any
-  // thread count above 1.
+  // With threads > 1 (at most 254 are used) and at least 2^15 distinct
+  // points, the construction runs on that many threads. It gives the same
+  // cells as the sequential one, numbered canonically (each cell's vertices
+  // in insertion order, the cells by their last vertex in that order, then
+  // by their vertex lists) instead of in the order the sequential
+  // insertions happened to leave them: the same numbers for any thread
+  // count above 1 and on every run.
   explicit Triangulation(std::vector<Vec3> points, std::vector<double> weights = {}, unsigned threads = 1);
 
   // Input points.
