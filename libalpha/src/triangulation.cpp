@@ -129,16 +129,11 @@ struct Scratch {
   Array<Index> remap, sorted;
 
   void prepare(std::size_t cells, std::size_t points, unsigned threads) {
-    const auto zeroed = [](auto& array, std::size_t size) {
-      reserve_huge(array, size);
-      array.resize(size);
-      std::fill(array.begin(), array.end(), typename std::decay_t<decltype(array)>::value_type{});
-    };
     marks.resize(threads);
-    for (auto& m : marks) zeroed(m, cells);
+    for (auto& m : marks) assign_huge(m, cells);
     count.resize(threads);
-    for (auto& c : count) zeroed(c, points);
-    zeroed(numbered, cells);
+    for (auto& c : count) assign_huge(c, points);
+    assign_huge(numbered, cells);
   }
 };
 
@@ -189,7 +184,7 @@ public:
     for (Index i : o_.input) o_.points.push_back(t_.points_[i]);
     if (t_.weighted())
       for (Index i : o_.input) o_.weights.push_back(t_.weights_[i]);
-    kernel_ = Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+    kernel_ = order_kernel();
     first_ = initial_simplex();
     if (parallel) insert_parallel(threads);
     else insert_range(0, o_.points.size(), 0);
@@ -320,6 +315,11 @@ private:
     return v;
   }
 
+  // A kernel on the points in insertion order, with counts of its own.
+  Kernel order_kernel() const {
+    return Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+  }
+
   bool is_first(Index p) const { return p == first_[0] || p == first_[1] || p == first_[2] || p == first_[3]; }
 
   // Inserts the points at positions [begin, end); returns the last hint.
@@ -352,7 +352,7 @@ private:
     std::vector<std::unique_ptr<Builder>> workers;
     for (unsigned w = 0; w < threads; ++w) {
       auto b = std::make_unique<Builder>(t_, o_);
-      b->kernel_ = Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+      b->kernel_ = order_kernel();
       b->first_ = first_;
       b->shared_ = &shared;
       b->me_ = std::uint8_t(w + 1);
@@ -401,12 +401,14 @@ private:
     scratch_.remap = std::move(workers[1]->cell_mark_);
     if (left.empty()) return;
     std::sort(left.begin(), left.end());
+    // The walk starts from a live cell: one a builder made lately, else the first.
+    const auto live = [&](Index c) { return shared.lock[c].load(std::memory_order_relaxed) != SharedCells::kDead; };
     Index start = kNone;
     for (const auto& b : workers)
       for (Index c : b->recent_)
-        if (start == kNone && shared.lock[c].load(std::memory_order_relaxed) != SharedCells::kDead) start = c;
-    for (Index c = 0; start == kNone; ++c)
-      if (c < used && shared.lock[c].load(std::memory_order_relaxed) != SharedCells::kDead) start = c;
+        if (start == kNone && live(c)) start = c;
+    for (Index c = 0; start == kNone && c < used; ++c)
+      if (live(c)) start = c;
     for (Index p : left) start = insert<false>(p, start);
   }
 
@@ -519,9 +521,7 @@ private:
       if constexpr (kShared) release(free_cells_.size());
       return start;
     }
-    if constexpr (kShared)
-      if (!find_cavity<true>(start, p)) return defer(p, start);
-    if constexpr (!kShared) find_cavity<false>(start, p);
+    if (!find_cavity<kShared>(start, p)) return defer(p, start);  // never without kShared
     if (t_.weighted()) mark_cavity_vertices();
     const std::size_t dead_from = free_cells_.size();
     const Index made = fill_cavity<kShared>();
