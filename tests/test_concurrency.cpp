@@ -9,12 +9,14 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <numeric>
 #include <array>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/spatial_sort.hpp"
 #include "alpha/triangulation.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
@@ -135,7 +137,7 @@ std::vector<std::array<alpha::Index, 4>> cell_set(const alpha::Triangulation& t)
 }
 
 // Neighbours that share the facet, finite cells positively oriented, a
-// vertex's incident cell holding it.
+// vertex's incident cell holding it, none for other points.
 void check_valid(const alpha::Triangulation& t) {
   alpha::Kernel kernel = t.kernel();
   std::size_t bad_links = 0, bad_orientation = 0, bad_incident = 0;
@@ -150,13 +152,29 @@ void check_valid(const alpha::Triangulation& t) {
     if (!t.is_infinite(c)) bad_orientation += kernel.orient3d(cell.v[0], cell.v[1], cell.v[2], cell.v[3]) <= 0;
   }
   for (alpha::Index v = 0; v < t.num_points(); ++v)
-    if (t.status(v) == alpha::PointStatus::vertex) bad_incident += t.index_of(t.incident_cell(v), v) < 0;
+    bad_incident += t.status(v) == alpha::PointStatus::vertex ? t.index_of(t.incident_cell(v), v) < 0
+                                                              : t.incident_cell(v) != alpha::kNone;
   CHECK(bad_links == 0);
   CHECK(bad_orientation == 0);
   CHECK(bad_incident == 0);
 }
 
 }  // namespace
+
+TEST_CASE("The insertion order sorted on threads is the sequential one", "[concurrency][triangulation]") {
+  // 150,000 points: the two longest rounds are sorted on threads. Half of
+  // them twice, so that equal curve keys are ordered by index.
+  std::vector<alpha::Vec3> points = testing::random_points(100000, 16);
+  points.insert(points.end(), points.begin(), points.begin() + 50000);
+  std::vector<alpha::Index> indices(points.size());
+  std::iota(indices.begin(), indices.end(), alpha::Index(0));
+  const std::vector<alpha::Index> sequential = alpha::brio_order(points, indices);
+  CHECK(std::is_permutation(sequential.begin(), sequential.end(), indices.begin()));
+  for (unsigned threads : {2u, 3u}) {
+    INFO(threads << " threads");
+    CHECK(alpha::brio_order(points, indices, threads) == sequential);
+  }
+}
 
 TEST_CASE("A triangulation built on threads has the sequential one's cells", "[concurrency][triangulation]") {
   using alpha::Vec3;
@@ -193,12 +211,15 @@ TEST_CASE("A triangulation built on threads has the sequential one's cells", "[c
     }
     check_valid(two);
     // The canonical numbering: the same cells in the same order, each with
-    // the same vertex and neighbour lists, for 2 and 3 threads and on every run.
+    // the same vertex and neighbour lists, and the same incident cells, for
+    // 2 and 3 threads and on every run.
     bool same_numbers = two.num_cells() == again.num_cells() && two.num_cells() == three.num_cells();
     for (alpha::Index c = 0; same_numbers && c < two.num_cells(); ++c) {
       same_numbers = two.cell(c).v == again.cell(c).v && two.cell(c).n == again.cell(c).n &&
                      two.cell(c).v == three.cell(c).v && two.cell(c).n == three.cell(c).n;
     }
+    for (alpha::Index i = 0; same_numbers && i < points.size(); ++i)
+      same_numbers = two.incident_cell(i) == again.incident_cell(i) && two.incident_cell(i) == three.incident_cell(i);
     CHECK(same_numbers);
     CHECK(two.num_finite_cells() == sequential.num_finite_cells());
     CHECK(two.predicate_stats().power.calls() > 0);

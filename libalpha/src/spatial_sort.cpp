@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
+
+#include "parallel.hpp"
 
 namespace alpha {
 namespace {
@@ -11,6 +14,10 @@ namespace {
 // Per axis: 2^16 cells resolve any realistic input finer than needed for
 // locality, at a third of the cost of full 21-bit keys.
 constexpr int kBits = 16;
+
+// Work on this many points or more goes on threads, if given (less takes
+// less than starting a thread).
+constexpr std::size_t kParallelPoints = std::size_t(1) << 14;
 
 // SplitMix64: tiny, portable and deterministic (std::shuffle is not).
 struct SplitMix64 {
@@ -56,7 +63,7 @@ std::uint64_t hilbert_key(std::uint32_t x[3]) {
 
 }  // namespace
 
-std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices) {
+std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<const Index> indices, unsigned threads) {
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (Index i : indices) {
     const Vec3& p = points[i];
@@ -69,13 +76,15 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<
   auto cell = [&](double v, double l) {
     return static_cast<std::uint32_t>(std::clamp((v - l) * scale, 0.0, double((1u << kBits) - 1)));
   };
-  std::vector<std::uint64_t> keys;
-  keys.reserve(indices.size());
-  for (Index i : indices) {
-    const Vec3& p = points[i];
-    std::uint32_t x[3] = {cell(p.x, lo.x), cell(p.y, lo.y), cell(p.z, lo.z)};
-    keys.push_back(hilbert_key(x));
-  }
+  std::vector<std::uint64_t> keys(indices.size());
+  in_parallel(indices.size() >= kParallelPoints ? threads : 1u, indices.size(),
+              [&](unsigned, std::size_t begin, std::size_t end) {
+                for (std::size_t k = begin; k < end; ++k) {
+                  const Vec3& p = points[indices[k]];
+                  std::uint32_t x[3] = {cell(p.x, lo.x), cell(p.y, lo.y), cell(p.z, lo.z)};
+                  keys[k] = hilbert_key(x);
+                }
+              });
   return keys;
 }
 
@@ -88,18 +97,19 @@ std::vector<std::size_t> brio_rounds(std::size_t n) {
   return cuts;
 }
 
-std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> order,
+std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> order, unsigned threads,
                               std::uint64_t seed) {
   // Keys first, while the points are read in order (cache friendly), then
   // shuffle the (key, index) pairs.
-  const std::vector<std::uint64_t> keys = hilbert_keys(points, order);
+  const std::vector<std::uint64_t> keys = hilbert_keys(points, order, threads);
   std::vector<std::pair<std::uint64_t, Index>> items(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) items[i] = {keys[i], order[i]};
   SplitMix64 rng{seed};
   for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[rng.next() % i]);
   const std::vector<std::size_t> cuts = brio_rounds(items.size());
   for (std::size_t r = 1; r < cuts.size(); ++r)
-    std::sort(items.begin() + std::ptrdiff_t(cuts[r - 1]), items.begin() + std::ptrdiff_t(cuts[r]));
+    parallel_sort(std::span(items).subspan(cuts[r - 1], cuts[r] - cuts[r - 1]),
+                  cuts[r] - cuts[r - 1] >= kParallelPoints ? threads : 1u, std::less<>());
   for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].second;
   return order;
 }

@@ -16,6 +16,7 @@
 #include "alpha/error.hpp"
 #include "alpha/spatial_sort.hpp"
 #include "huge_pages.hpp"
+#include "parallel.hpp"
 
 namespace alpha {
 namespace {
@@ -79,14 +80,6 @@ int spanning_points(Kernel& kernel, const std::vector<Vec3>& p, const std::vecto
   return 3;
 }
 
-// f(t, begin, end) on `threads` threads t, [0, n) cut into equal ranges.
-template <class F>
-void in_parallel(unsigned threads, std::size_t n, F f) {
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back([&f, t, threads, n] { f(t, n * t / threads, n * (t + 1) / threads); });
-  f(0u, std::size_t(0), n / threads);
-}
-
 }  // namespace
 
 int affine_dimension(const std::vector<Vec3>& points) {
@@ -114,6 +107,46 @@ struct SharedCells {
   std::unique_ptr<std::atomic<std::uint8_t>[]> lock;
   std::atomic<std::size_t> next{0};  // the first id not handed out
   std::size_t capacity = 0;
+};
+
+// The last round of a parallel construction (7/8 of the points) in pieces:
+// each builder takes its own stretch's from the front and, once done, the
+// others' from the back, so that the builders finish together even when
+// one runs slower (a busy core). Points of a piece are consecutive in the
+// round's curve order, so a piece's walks stay short.
+class Pieces {
+public:
+  static constexpr std::size_t kPoints = 1024;  // per piece
+
+  Pieces(std::size_t begin, std::size_t end, unsigned builders)
+      : begin_(begin), end_(end), left_(std::make_unique<Left[]>(builders)) {
+    const std::uint64_t count = (end - begin + kPoints - 1) / kPoints;
+    for (unsigned w = 0; w < builders; ++w) left_[w].range = (count * w / builders) << 32 | count * (w + 1) / builders;
+  }
+  // Builder w's next piece of its own stretch, false when none is left.
+  bool front(unsigned w, std::size_t& first, std::size_t& last) { return take(w, true, first, last); }
+  // The last piece left of builder w's stretch, for another builder.
+  bool back(unsigned w, std::size_t& first, std::size_t& last) { return take(w, false, first, last); }
+
+private:
+  struct alignas(64) Left {  // a cache line each: the owner changes it often
+    std::atomic<std::uint64_t> range;  // the pieces left: first << 32 | end
+  };
+  bool take(unsigned w, bool from_front, std::size_t& first, std::size_t& last) {
+    std::uint64_t range = left_[w].range.load(std::memory_order_relaxed);
+    std::uint64_t piece;
+    do {
+      const std::uint64_t front = range >> 32, back = range & 0xffffffffu;
+      if (front >= back) return false;
+      piece = from_front ? front : back - 1;
+    } while (!left_[w].range.compare_exchange_weak(range, from_front ? range + (std::uint64_t(1) << 32) : range - 1,
+                                                   std::memory_order_relaxed));
+    first = begin_ + piece * kPoints;
+    last = std::min(first + kPoints, end_);
+    return true;
+  }
+  std::size_t begin_, end_;
+  std::unique_ptr<Left[]> left_;
 };
 
 // Arrays that a parallel construction fills later, allocated and faulted
@@ -144,7 +177,8 @@ struct Scratch {
 // With threads, the coarse rounds of the insertion order (about n/64 points,
 // whose cavities span the whole set) are inserted sequentially, then each
 // later round is cut into as many stretches of its curve order as there are
-// threads, one builder each. A builder locks every cell it reads (the walk
+// threads, one builder each (the last round in pieces, which a builder done
+// with its own takes from the others: see Pieces). A builder locks every cell it reads (the walk
 // hand over hand, the cavity and its boundary all at once) with a
 // non-blocking try: when another builder holds one, the point is left for a
 // sequential pass at the end. So each insertion sees and replaces a valid
@@ -179,11 +213,15 @@ public:
     // The cell array is written at random places as it fills.
     reserve_huge(cells_, expected);
     cell_mark_.assign(parallel ? expected / 16 : expected, 0);  // threads: for the coarse rounds
-    o_.input = brio_order(t_.points_, reps);
-    o_.points.reserve(o_.input.size());
-    for (Index i : o_.input) o_.points.push_back(t_.points_[i]);
-    if (t_.weighted())
-      for (Index i : o_.input) o_.weights.push_back(t_.weights_[i]);
+    const unsigned setup_threads = parallel ? threads : 1;
+    o_.input = brio_order(t_.points_, reps, setup_threads);
+    o_.points.resize(o_.input.size());
+    if (t_.weighted()) o_.weights.resize(o_.input.size());
+    in_parallel(setup_threads, o_.input.size(), [&](unsigned, std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) o_.points[k] = t_.points_[o_.input[k]];
+      if (t_.weighted())
+        for (std::size_t k = begin; k < end; ++k) o_.weights[k] = t_.weights_[o_.input[k]];
+    });
     kernel_ = order_kernel();
     first_ = initial_simplex();
     if (parallel) insert_parallel(threads);
@@ -364,10 +402,11 @@ private:
     workers[0]->free_cells_ = std::move(free_cells_);
     free_cells_.clear();
 
+    Pieces last_round(rounds[rounds.size() - 2], n, threads);
     std::vector<std::exception_ptr> errors(threads);
     auto work = [&](unsigned w) {
       try {
-        workers[w]->insert_share(rounds, r0, w, threads);
+        workers[w]->insert_share(rounds, r0, last_round, w, threads);
       } catch (...) {
         errors[w] = std::current_exception();
       }
@@ -412,17 +451,26 @@ private:
     for (Index p : left) start = insert<false>(p, start);
   }
 
-  // A builder's share of the parallel rounds: stretch w of T of each.
-  void insert_share(const std::vector<std::size_t>& rounds, std::size_t r0, unsigned w, unsigned T) {
+  // A builder's share of the parallel rounds: stretch w of T of each but
+  // the last, then pieces of the last (its own, then the others').
+  void insert_share(const std::vector<std::size_t>& rounds, std::size_t r0, Pieces& last_round, unsigned w, unsigned T) {
     Index hint = recent_[0];
-    for (std::size_t r = r0; r + 1 < rounds.size(); ++r) {
-      const std::size_t b = rounds[r], size = rounds[r + 1] - b;
-      for (Index p = Index(b + size * w / T); p < b + size * (w + 1) / T; ++p) {
+    const auto insert_points = [&](std::size_t begin, std::size_t end) {
+      for (Index p = Index(begin); p < end; ++p) {
         if (is_first(p)) continue;
         if (stopped_) deferred_.push_back(p);
         else hint = insert<true>(p, hint);
       }
+    };
+    for (std::size_t r = r0; r + 2 < rounds.size(); ++r) {
+      const std::size_t b = rounds[r], size = rounds[r + 1] - b;
+      insert_points(b + size * w / T, b + size * (w + 1) / T);
     }
+    std::size_t first, last;
+    while (last_round.front(w, first, last)) insert_points(first, last);
+    // A builder out of cell ids would only defer them.
+    for (unsigned o = (w + 1) % T; o != w && !stopped_; o = (o + 1) % T)
+      while (!stopped_ && last_round.back(o, first, last)) insert_points(first, last);
   }
 
   bool try_lock(Index c) {
@@ -685,26 +733,39 @@ private:
       if (vertex_mark_[v] == stamp_) t_.status_[o_.input[v]] = PointStatus::hidden;
   }
 
-  // The canonical numbering of a parallel construction: each cell's
-  // vertices sorted (the first two swapped when that takes an odd
-  // permutation, to keep the orientation), the cells by their last finite
-  // vertex in insertion order (the point whose insertion made them, so the
-  // order follows where the builders stored them), then by their sorted
-  // vertex lists. remap[c] is kNone for unused cells, else set to c's
-  // number; returns the number of cells.
-  std::size_t canonical_numbers(Scratch::Array<Index>& remap, unsigned threads) {
+  // The canonical order of a parallel construction, into scratch_.numbered:
+  // each cell's vertices sorted (the first two swapped when that takes an
+  // odd permutation, to keep the orientation), the cells by their last
+  // finite vertex in insertion order (the point whose insertion made them,
+  // so the order follows where the builders stored them), then by their
+  // sorted vertex lists. The neighbours are left as they were; remap[c]
+  // becomes c's number (it is kNone for unused cells). Returns the number
+  // of cells.
+  std::size_t canonical_order(Scratch::Array<Index>& remap, unsigned threads) {
     const std::size_t n = o_.points.size();
-    const auto last = [](const Cell& cell) { return cell.v[3] == kInfinite ? cell.v[2] : cell.v[3]; };
-    const auto sorted_vertices = [](const Cell& cell) {
-      const auto& v = cell.v;
-      return std::array<Index, 4>{std::min(v[0], v[1]), std::max(v[0], v[1]), v[2], v[3]};
+    const auto last = [](const Cell& cell) {  // kInfinite is the largest index
+      Index m = 0;
+      for (Index v : cell.v) m = std::max(m, v == kInfinite ? 0 : v);
+      return m;
     };
     // Cells by their last vertex, counted per thread.
     std::vector<Scratch::Array<Index>>& count = scratch_.count;
     in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c)
+        if (remap[c] != kNone) ++count[t][last(cells_[c])];
+    });
+    Index total = 0;  // count[t][v]: where thread t's cells of vertex v go
+    for (std::size_t v = 0; v < n; ++v)
+      for (auto& c : count) total += std::exchange(c[v], total);
+    // Each cell, its vertices sorted, to its run; sorted[k]: where the k-th came from.
+    Scratch::Array<Cell>& numbered = scratch_.numbered;
+    Scratch::Array<Index>& sorted = scratch_.sorted;
+    numbered.resize(total);
+    sorted.resize(total);
+    in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c) {
         if (remap[c] == kNone) continue;
-        Cell& cell = cells_[c];
+        Cell cell = cells_[c];
         bool odd = false;
         const auto exchange = [&](int a, int b) {  // a sorting network, the neighbours along, no branches
           const bool swap = cell.v[a] > cell.v[b];
@@ -715,29 +776,34 @@ private:
         };
         exchange(0, 1), exchange(2, 3), exchange(0, 2), exchange(1, 3), exchange(1, 2);
         if (odd) std::swap(cell.v[0], cell.v[1]), std::swap(cell.n[0], cell.n[1]);
-        ++count[t][last(cell)];
+        const Index k = count[t][last(cell)]++;
+        numbered[k] = cell;
+        sorted[k] = Index(c);
       }
-    });
-    Index total = 0;  // count[t][v]: where thread t's cells of vertex v go
-    for (std::size_t v = 0; v < n; ++v)
-      for (auto& c : count) total += std::exchange(c[v], total);
-    Scratch::Array<Index>& sorted = scratch_.sorted;
-    sorted.resize(total);
-    in_parallel(threads, cells_.size(), [&](unsigned t, std::size_t begin, std::size_t end) {
-      for (std::size_t c = begin; c < end; ++c)
-        if (remap[c] != kNone) sorted[count[t][last(cells_[c])]++] = Index(c);
     });
     // count.back()[v] is now where v's cells end; sort each run by vertices.
     const Scratch::Array<Index>& ends = count.back();
-    in_parallel(threads, n, [&](unsigned, std::size_t begin, std::size_t end) {
-      for (std::size_t v = begin; v < end; ++v) {
-        if (v + 8 < end)  // the cells are scattered: ask for a later run's ahead
-          for (std::size_t k = ends[v + 7]; k < ends[v + 8]; ++k) __builtin_prefetch(&cells_[sorted[k]]);
-        for (std::size_t i = v == 0 ? 0 : ends[v - 1], e = ends[v], j = i + 1; j < e; ++j)
-          for (std::size_t k = j; k > i && sorted_vertices(cells_[sorted[k]]) < sorted_vertices(cells_[sorted[k - 1]]); --k)
-            std::swap(sorted[k], sorted[k - 1]);
-      }
-      for (std::size_t k = begin == 0 ? 0 : ends[begin - 1]; k < (end == 0 ? 0 : ends[end - 1]); ++k) remap[sorted[k]] = Index(k);
+    const auto sorted_vertices = [](const Cell& cell) {
+      const auto& v = cell.v;
+      return std::array<Index, 4>{std::min(v[0], v[1]), std::max(v[0], v[1]), v[2], v[3]};
+    };
+    // Split by cells, not vertices: the late vertices are the last ones of most.
+    const auto first_run = [&](std::size_t k) {  // the first vertex whose run starts at k or later
+      return k == 0 ? 0 : k == total ? n : std::size_t(std::lower_bound(ends.begin(), ends.end(), Index(k)) - ends.begin()) + 1;
+    };
+    in_parallel(threads, total, [&](unsigned, std::size_t begin, std::size_t end) {
+      const std::size_t first = first_run(begin), stop = first_run(end);
+      for (std::size_t v = first; v < stop; ++v)
+        for (std::size_t i = v == 0 ? 0 : ends[v - 1], e = ends[v], j = i + 1; j < e; ++j) {
+          const Cell cell = numbered[j];
+          const Index from = sorted[j];
+          const auto key = sorted_vertices(cell);
+          std::size_t k = j;
+          for (; k > i && key < sorted_vertices(numbered[k - 1]); --k) numbered[k] = numbered[k - 1], sorted[k] = sorted[k - 1];
+          numbered[k] = cell, sorted[k] = from;
+        }
+      for (std::size_t k = first == 0 ? 0 : ends[first - 1]; k < (stop == 0 ? 0 : ends[stop - 1]); ++k)
+        remap[sorted[k]] = Index(k);
     });
     return total;
   }
@@ -755,14 +821,34 @@ private:
         if (v != kInfinite) v = o_.input[v];
       return cell;
     };
+    // Each vertex links to the last cell holding it.
+    t_.vertex_cell_.assign(t_.points_.size(), kNone);
     if (threads > 1) {
       scratch_.sorted = std::move(cell_mark_);
       Scratch::Array<Cell>& numbered = scratch_.numbered;
-      numbered.resize(canonical_numbers(remap, threads));
-      in_parallel(threads, cells_.size(), [&](unsigned, std::size_t begin, std::size_t end) {
-        for (std::size_t c = begin; c < end; ++c)
-          if (remap[c] != kNone) numbered[remap[c]] = renumbered(cells_[c]);
+      const std::size_t total = canonical_order(remap, threads);
+      // Per thread, in its count array: 1 + the last number of a cell
+      // holding each vertex (insertion positions), 0 for none.
+      std::vector<std::size_t> finite(threads, 0);
+      in_parallel(threads, total, [&](unsigned t, std::size_t begin, std::size_t end) {
+        Scratch::Array<Index>& last = scratch_.count[t];
+        std::fill(last.begin(), last.end(), 0);
+        for (std::size_t k = begin; k < end; ++k) {
+          Cell& cell = numbered[k];
+          finite[t] += cell.v[3] != kInfinite;  // canonical_order sorted kInfinite last
+          for (Index v : cell.v)
+            if (v != kInfinite) last[v] = Index(k + 1);
+          cell = renumbered(cell);
+        }
       });
+      in_parallel(threads, o_.points.size(), [&](unsigned, std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v < end; ++v) {
+          Index link = 0;
+          for (const auto& last : scratch_.count) link = std::max(link, last[v]);
+          if (link) t_.vertex_cell_[o_.input[v]] = link - 1;
+        }
+      });
+      for (std::size_t f : finite) t_.num_finite_cells_ += f;
       cells_.swap(numbered);
     } else {
       Index next = 0;
@@ -772,15 +858,14 @@ private:
       for (Index c = 0; c < cells_.size(); ++c)
         if (remap[c] != kNone) cells_[remap[c]] = renumbered(cells_[c]);
       cells_.resize(next);
-    }
-    t_.vertex_cell_.assign(t_.points_.size(), kNone);
-    for (Index c = 0; c < cells_.size(); ++c) {
-      bool finite = true;
-      for (Index v : cells_[c].v) {
-        if (v == kInfinite) finite = false;
-        else t_.vertex_cell_[v] = c;
+      for (Index c = 0; c < cells_.size(); ++c) {
+        bool finite = true;
+        for (Index v : cells_[c].v) {
+          if (v == kInfinite) finite = false;
+          else t_.vertex_cell_[v] = c;
+        }
+        t_.num_finite_cells_ += finite;
       }
-      t_.num_finite_cells_ += finite;
     }
     for (PointStatus s : t_.status_) {
       t_.num_hidden_ += s == PointStatus::hidden;
