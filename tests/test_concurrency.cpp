@@ -9,8 +9,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <numeric>
 #include <array>
+#include <numeric>
 #include <string>
 #include <thread>
 #include <vector>

@@ -178,13 +178,13 @@ struct Scratch {
 // whose cavities span the whole set) are inserted sequentially, then each
 // later round is cut into as many stretches of its curve order as there are
 // threads, one builder each (the last round in pieces, which a builder done
-// with its own takes from the others: see Pieces). A builder locks every cell it reads (the walk
-// hand over hand, the cavity and its boundary all at once) with a
-// non-blocking try: when another builder holds one, the point is left for a
-// sequential pass at the end. So each insertion sees and replaces a valid
-// triangulation, and the result is the unique regular triangulation of the
-// perturbed points, numbered in a canonical order (finish()): the same for any
-// thread count and timing.
+// with its own takes from the others: see Pieces). A builder locks every
+// cell it reads (the walk hand over hand, the cavity and its boundary all
+// at once) with a non-blocking try: when another builder holds one, the
+// point is left for a sequential pass at the end. So each insertion sees
+// and replaces a valid triangulation, and the result is the unique regular
+// triangulation of the perturbed points, numbered in a canonical order
+// (finish()): the same for any thread count and timing.
 class Triangulation::Builder {
 public:
   Builder(Triangulation& t, InsertionOrder& o) : t_(t), o_(o) {}
