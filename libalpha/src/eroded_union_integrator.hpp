@@ -36,7 +36,12 @@ inline constexpr int kCutNarrowAfter = 3;
 // F found last starts to be found, located to a thousandth of that.
 inline constexpr double kBracket = kCutPrecision / 8;
 
+// Within a turn of [0, 2 pi) (nearly every call), the values fmod gives:
+// a - 2 pi is exact there (Sterbenz), as fmod is; -2 pi itself goes to
+// fmod, whose -0 stays.
 inline double wrap(double a) {
+  if (a >= 0 && a < 2 * kTwoPi) return a < kTwoPi ? a : a - kTwoPi;
+  if (a < 0 && a > -kTwoPi) return a + kTwoPi;
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
 }

@@ -2,7 +2,7 @@
 #include "molecule/structure_copy.hpp"
 
 #include <cctype>
-#include <cstdio>
+#include <charconv>
 #include <set>
 #include <string_view>
 #include <tuple>
@@ -16,29 +16,77 @@ namespace {
 // bytes become '_'), '.' when empty, single-quoted where a bare word would
 // be read as something else (a data name, a reserved word, a quote or
 // comment); with no whitespace inside, the quotes end where meant.
-std::string cif_value(std::string_view text) {
+// Whether text starts with the lower-case `prefix`, in any case.
+bool starts_with_word(std::string_view text, std::string_view prefix) {
+  if (text.size() < prefix.size()) return false;
+  for (std::size_t k = 0; k < prefix.size(); ++k)
+    if (std::tolower(static_cast<unsigned char>(text[k])) != prefix[k]) return false;
+  return true;
+}
+
+// A CIF value: a bare word of printable ASCII without whitespace (other
+// bytes become '_'), '.' when empty, single-quoted where a bare word would
+// be read as something else (a data name, a reserved word, a quote or
+// comment); with no whitespace inside, the quotes end where meant.
+void append_cif_value(std::string& out, std::string_view text) {
   std::string v = printable_ascii(text, " ", '_');
-  if (v.empty()) return ".";
-  std::string lower;
-  for (const char c : v) lower += char(std::tolower(static_cast<unsigned char>(c)));
-  const bool reserved = lower.rfind("data_", 0) == 0 || lower.rfind("loop_", 0) == 0 ||
-                        lower.rfind("save_", 0) == 0 || lower.rfind("global_", 0) == 0 ||
-                        lower.rfind("stop_", 0) == 0 || v == "." || v == "?";
-  if (!reserved && std::string_view("_#$'\"[];").find(v[0]) == std::string_view::npos) return v;
+  if (v.empty()) {
+    out += '.';
+    return;
+  }
+  bool reserved = v == "." || v == "?";
+  for (const std::string_view word : {"data_", "loop_", "save_", "global_", "stop_"})
+    reserved = reserved || starts_with_word(v, word);
+  if (!reserved && std::string_view("_#$'\"[];").find(v[0]) == std::string_view::npos) {
+    out += v;
+    return;
+  }
   for (char& c : v)
     if (c == '\'') c = '_';
-  return "'" + v + "'";
+  out += '\'';
+  out += v;
+  out += '\'';
+}
+
+// The value as printf's "%.{precision}f" writes it (to_chars is that, in
+// a tenth of the time).
+void append_fixed(std::string& out, double value, int precision) {
+  char text[400];  // the longest double in fixed notation, with 3 decimals
+  out.append(text, std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, precision).ptr);
 }
 
 void atom_line(std::string& out, std::size_t id, const Atom& a, bool hetero) {
-  char xyz[96];
-  std::snprintf(xyz, sizeof xyz, "%.3f %.3f %.3f %.2f %.2f", a.position.x, a.position.y, a.position.z,
-                double(a.occupancy), double(a.b_factor));
   const std::string number = std::to_string(a.seq_num);
-  out += std::string(hetero ? "HETATM " : "ATOM ") + std::to_string(id) + ' ' + cif_value(a.element) + ' ' +
-         cif_value(a.name) + " . " + cif_value(a.residue_name) + ' ' + cif_value(a.chain) + ' ' + number + ' ' +
-         (a.icode ? cif_value(std::string(1, a.icode)) : std::string("?")) + ' ' + xyz + ' ' + number + ' ' +
-         cif_value(a.chain) + " 1\n";
+  out += hetero ? "HETATM " : "ATOM ";
+  out += std::to_string(id);
+  for (const std::string_view field : {std::string_view(a.element), std::string_view(a.name)}) {
+    out += ' ';
+    append_cif_value(out, field);
+  }
+  out += " . ";
+  append_cif_value(out, a.residue_name);
+  out += ' ';
+  append_cif_value(out, a.chain);
+  out += ' ';
+  out += number;
+  out += ' ';
+  if (a.icode)
+    append_cif_value(out, std::string_view(&a.icode, 1));
+  else
+    out += '?';
+  out += ' ';
+  for (const double x : {a.position.x, a.position.y, a.position.z}) {
+    append_fixed(out, x, 3);
+    out += ' ';
+  }
+  for (const float x : {a.occupancy, a.b_factor}) {
+    append_fixed(out, double(x), 2);
+    out += ' ';
+  }
+  out += number;
+  out += ' ';
+  append_cif_value(out, a.chain);
+  out += " 1\n";
 }
 
 }  // namespace

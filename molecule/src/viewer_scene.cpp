@@ -83,13 +83,17 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
   }
   if (run.paths) {
     const std::vector<Atom>& atoms = run.structure->atoms;
+    // Each atom's residue once, not once a path.
+    std::vector<std::string> residue_of(atoms.size());
+    if (!run.paths->empty())
+      for (std::size_t i = 0; i < atoms.size(); ++i) residue_of[i] = residue_id(atoms[i]);
     for (std::size_t k = 0; k < run.paths->size(); ++k) {
       const TunnelPath& p = (*run.paths)[k];
       ScenePath path{"tunnel_" + std::to_string(cavities.tunnels.size() + k + 1), tunnel_color(k), {}, {}};
       std::set<std::string> residues;
-      for (const alpha::Index i : p.lining_atoms) residues.insert(residue_id(atoms.at(i)));
+      for (const alpha::Index i : p.lining_atoms) residues.insert(residue_of.at(i));
       for (std::size_t i = 0; i < atoms.size(); ++i)
-        if (residues.count(residue_id(atoms[i]))) path.lining_ids.push_back(i + 1);  // structure_copy's ids
+        if (residues.count(residue_of[i])) path.lining_ids.push_back(i + 1);  // structure_copy's ids
       for (const ProfilePoint& q : p.profile) path.spheres.push_back({q.x, q.radius});
       scene.paths.push_back(std::move(path));
     }
