@@ -565,6 +565,39 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
 
 }
 
+TEST_CASE("pockets outputs: structure.cif quotes CIF reserved words and keeps printf's digits", "[pocket_outputs]") {
+  molecule::Structure s;
+  const std::vector<std::string> chains{"Loop_A", "data_1", "STOP_", "Global_x", "save_", "_A", "B"};
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    molecule::Atom a;
+    a.serial = int(k + 1);
+    a.name = "CA";
+    a.element = "C";
+    a.chain = chains[k];
+    a.residue_name = "ALA";
+    a.seq_num = int(k + 1);
+    a.position = {-1.0005 - 3.0 * double(k), 12.3125, 0.0625};  // halfway between two 3-decimal values: even wins
+    a.occupancy = 0.125f;  // ties at 2 decimals too: 0.12
+    a.b_factor = 20.125f;
+    s.atoms.push_back(a);
+  }
+  const std::string cif = molecule::structure_copy(s, "x").cif;
+  CHECK(cif.find(" 'Loop_A' ") != std::string::npos);
+  CHECK(cif.find(" 'STOP_' ") != std::string::npos);
+  CHECK(cif.find(" B ") != std::string::npos);  // a plain word stays bare
+  CHECK(cif.find(" 12.312 0.062 0.12 20.12 ") != std::string::npos);
+  molecule::StructureOptions all;
+  all.keep_hetero = true;  // one-residue chains read as hetero groups
+  const molecule::Structure copy = molecule::parse_structure(cif, "copy", all);
+  REQUIRE(copy.atoms.size() == s.atoms.size());
+  for (const molecule::Atom& a : copy.atoms) {  // read back in another order: by residue number
+    REQUIRE(a.seq_num >= 1);
+    REQUIRE(a.seq_num <= int(chains.size()));
+    CHECK(a.chain == chains[a.seq_num - 1]);
+    CHECK(alpha::norm(a.position - s.atoms[a.seq_num - 1].position) < 1e-3);
+  }
+}
+
 TEST_CASE("pockets outputs: structure.cif of a file with several models holds the model searched",
           "[pocket_outputs]") {
   const std::string file = std::string(ALPHAPOCKET_TEST_DATA) + "/1d3z_models_1_2.pdb.gz";

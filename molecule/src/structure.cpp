@@ -23,6 +23,7 @@
 #include <gemmi/resinfo.hpp>
 
 #include "alpha/input_file.hpp"
+#include "case_insensitive.hpp"
 #include "gunzip.hpp"
 #include "molecule/radii.hpp"
 #include "molecule/safe_text.hpp"
@@ -39,17 +40,6 @@ namespace {
 }
 
 // ---------------------------------------------------------------- input
-
-// Whether s equals `lower` (lower case) ignoring case.
-bool equals_ci(std::string_view s, std::string_view lower) {
-  return s.size() == lower.size() && std::equal(lower.begin(), lower.end(), s.begin(), [](char a, char b) {
-           return a == std::tolower(static_cast<unsigned char>(b));
-         });
-}
-
-bool ends_with_ci(std::string_view s, std::string_view suffix) {
-  return s.size() >= suffix.size() && equals_ci(s.substr(s.size() - suffix.size()), suffix);
-}
 
 bool is_blank(std::string_view text) {
   return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });

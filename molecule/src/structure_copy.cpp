@@ -1,28 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "molecule/structure_copy.hpp"
 
-#include <cctype>
 #include <charconv>
 #include <set>
 #include <string_view>
 #include <tuple>
 
+#include "case_insensitive.hpp"
 #include "molecule/safe_text.hpp"
 
 namespace molecule {
 namespace {
-
-// A CIF value: a bare word of printable ASCII without whitespace (other
-// bytes become '_'), '.' when empty, single-quoted where a bare word would
-// be read as something else (a data name, a reserved word, a quote or
-// comment); with no whitespace inside, the quotes end where meant.
-// Whether text starts with the lower-case `prefix`, in any case.
-bool starts_with_word(std::string_view text, std::string_view prefix) {
-  if (text.size() < prefix.size()) return false;
-  for (std::size_t k = 0; k < prefix.size(); ++k)
-    if (std::tolower(static_cast<unsigned char>(text[k])) != prefix[k]) return false;
-  return true;
-}
 
 // A CIF value: a bare word of printable ASCII without whitespace (other
 // bytes become '_'), '.' when empty, single-quoted where a bare word would
@@ -36,7 +24,7 @@ void append_cif_value(std::string& out, std::string_view text) {
   }
   bool reserved = v == "." || v == "?";
   for (const std::string_view word : {"data_", "loop_", "save_", "global_", "stop_"})
-    reserved = reserved || starts_with_word(v, word);
+    reserved = reserved || starts_with_ci(v, word);
   if (!reserved && std::string_view("_#$'\"[];").find(v[0]) == std::string_view::npos) {
     out += v;
     return;
