@@ -15,9 +15,9 @@ namespace {
 // locality, at a third of the cost of full 21-bit keys.
 constexpr int kBits = 16;
 
-// Work on this many points or more goes on threads, if given (less takes
-// less than starting a thread).
-constexpr std::size_t kParallelPoints = std::size_t(1) << 14;
+// The threads for work on n points: those given from 2^14 points on (less
+// takes less than starting a thread).
+unsigned threads_for(std::size_t n, unsigned threads) { return n >= std::size_t(1) << 14 ? threads : 1u; }
 
 // SplitMix64: tiny, portable and deterministic (std::shuffle is not).
 struct SplitMix64 {
@@ -77,7 +77,7 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Vec3> points, std::span<
     return static_cast<std::uint32_t>(std::clamp((v - l) * scale, 0.0, double((1u << kBits) - 1)));
   };
   std::vector<std::uint64_t> keys(indices.size());
-  in_parallel(indices.size() >= kParallelPoints ? threads : 1u, indices.size(),
+  in_parallel(threads_for(indices.size(), threads), indices.size(),
               [&](unsigned, std::size_t begin, std::size_t end) {
                 for (std::size_t k = begin; k < end; ++k) {
                   const Vec3& p = points[indices[k]];
@@ -109,7 +109,7 @@ std::vector<Index> brio_order(std::span<const Vec3> points, std::vector<Index> o
   const std::vector<std::size_t> cuts = brio_rounds(items.size());
   for (std::size_t r = 1; r < cuts.size(); ++r)
     parallel_sort(std::span(items).subspan(cuts[r - 1], cuts[r] - cuts[r - 1]),
-                  cuts[r] - cuts[r - 1] >= kParallelPoints ? threads : 1u, std::less<>());
+                  threads_for(cuts[r] - cuts[r - 1], threads), std::less<>());
   for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].second;
   return order;
 }

@@ -812,7 +812,9 @@ private:
   // fills in counts and vertex-to-cell links. With threads (a parallel
   // construction), in the canonical order.
   void finish(unsigned threads) {
-    Scratch::Array<Index> remap = std::move(scratch_.remap);  // never kNone, if given
+    // Never kNone where given: builder 1's marks on threads, else ours
+    // (their pages are in memory already; the marks are not needed again).
+    Scratch::Array<Index> remap = std::move(threads > 1 ? scratch_.remap : cell_mark_);
     remap.resize(cells_.size(), 0);
     for (Index c : free_cells_) remap[c] = kNone;
     const auto renumbered = [&](Cell cell) {
