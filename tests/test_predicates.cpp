@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -154,4 +156,72 @@ TEST_CASE("Integer input decided in doubles agrees with the dyadic stages", "[pr
     CHECK(k.stats().power.perturbed == ks.stats().power.perturbed);
   }
   CHECK(perturbed > 20);  // ties were common enough to test the perturbation
+}
+
+TEST_CASE("Small integers: the filters' doubles are exact, ties included", "[predicates][degenerate]") {
+  const auto in_doubles = [](std::vector<Vec3> p, std::vector<double> w) { return Kernel::exact_in_doubles(p, w); };
+  CHECK(in_doubles({{-7, 3, 1e6}, {504, 514, 1e6 + 511}}, {}));
+  CHECK_FALSE(in_doubles({{-7, 3, 0}, {505, 3, 0}}, {}));  // x spans 512
+  CHECK_FALSE(in_doubles({{0, 0, 0}, {1, 0.5, 0}}, {}));
+  CHECK(in_doubles({{0, 0, 0}, {1, 1, 1}}, {-3, 0x1p19 - 4}));
+  CHECK_FALSE(in_doubles({{0, 0, 0}, {1, 1, 1}}, {-3, 0x1p19 - 3}));  // weights span 2^19
+  CHECK_FALSE(in_doubles({{0, 0, 0}, {1, 1, 1}}, {0, 0.25}));
+
+  // Integer points on a sphere of radius about 255 about an integer centre
+  // far from the origin: every power test of five ties at values near
+  // 2^50, and the perturbation decides it from the filter's minors; moved
+  // by one unit, the sign is that of a sum of such values. Weights 0, equal
+  // (ties again) or anywhere in [0, 2^19). Each answer must equal that of
+  // the same points scaled by 2^-3, which are not integers and go through
+  // the filter and the exact stages.
+  std::mt19937_64 rng(5);
+  int ties = 0, decided = 0;
+  for (const int r2 : {65025, 64993, 63001}) {  // 255^2 and two sums of three squares below it
+    std::vector<Vec3> sphere;
+    const int r = int(std::sqrt(double(r2)));
+    for (int x = -r; x <= r; ++x)
+      for (int y = -r; y <= r; ++y) {
+        const int rest = r2 - x * x - y * y, z = int(std::lround(std::sqrt(double(std::max(rest, 0)))));
+        if (rest >= 0 && z * z == rest) {
+          sphere.push_back({x + 1e6, y - 3e5, z + 7.0});
+          if (z > 0) sphere.push_back({x + 1e6, y - 3e5, -z + 7.0});
+        }
+      }
+    REQUIRE(sphere.size() > 100);
+    std::uniform_int_distribution<std::size_t> pick(0, sphere.size() - 1);
+    std::uniform_int_distribution<int> nudge(-1, 1), weight(0, (1 << 19) - 1);
+    for (int trial = 0; trial < 2000; ++trial) {
+      std::vector<Vec3> p(5), scaled(5);
+      std::vector<double> w(5), scaled_w(5);
+      const int kind = trial % 3;  // weights 0, all equal, random
+      const double equal = double(weight(rng));
+      for (int i = 0; i < 5; ++i) {
+        p[i] = sphere[pick(rng)];
+        w[i] = kind == 0 ? 0.0 : kind == 1 ? equal : double(weight(rng));
+      }
+      p[0].x += nudge(rng);
+      for (int i = 0; i < 5; ++i) {
+        scaled[i] = {p[i].x / 8, p[i].y / 8, p[i].z / 8};
+        scaled_w[i] = w[i] / 64;
+      }
+      REQUIRE(Kernel::exact_in_doubles(p, w));
+      Kernel k(p.data(), w.data(), nullptr, true), ks(scaled.data(), scaled_w.data());
+      // The cell's vertices and the tested point in a random order, so that
+      // the perturbation asks for every cofactor in turn.
+      std::array<Index, 5> id{0, 1, 2, 3, 4};
+      std::shuffle(id.begin(), id.end(), rng);
+      const int o = k.orient3d(id[0], id[1], id[2], id[3]);
+      REQUIRE(o == ks.orient3d(id[0], id[1], id[2], id[3]));
+      if (o == 0) continue;
+      if (o < 0) std::swap(id[0], id[1]);
+      REQUIRE(k.power_conflict(id[0], id[1], id[2], id[3], id[4]) ==
+              ks.power_conflict(id[0], id[1], id[2], id[3], id[4]));
+      CHECK(k.orient3d(id[0], id[1], id[2], id[4]) == ks.orient3d(id[0], id[1], id[2], id[4]));
+      ties += int(k.stats().power.perturbed);
+      decided += int(k.stats().power.filtered);
+      CHECK(k.stats().power.perturbed == ks.stats().power.perturbed);
+    }
+  }
+  CHECK(ties > 500);
+  CHECK(decided > 500);
 }

@@ -30,19 +30,28 @@ inline Pair max2(Pair a, Pair b) { return a > b ? a : b; }
 inline Pair low2(Pair a) { return __builtin_shufflevector(a, a, 0, 0); }  // both lanes the low one
 inline Pair high2(Pair a) { return __builtin_shufflevector(a, a, 1, 1); }
 
-// Returns the sign, or 2 when the filter cannot decide. The x and y columns
-// side by side in pairs, each value the expression written out would round.
-int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+// orient3d's determinant and the largest magnitudes of its columns. The x
+// and y columns side by side in pairs, each value the expression written
+// out would round.
+struct OrientTerms {
+  double det, mx, my, mz;
+};
+
+[[gnu::always_inline]] inline OrientTerms orient_terms(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Pair axy{a.x, a.y};
   const Pair u = Pair{b.x, b.y} - axy, v = Pair{c.x, c.y} - axy, w = Pair{d.x, d.y} - axy;
   const double uz = b.z - a.z, vz = c.z - a.z, wz = d.z - a.z;
   // (vx wz - vz wx, vy wz - vz wy), then ux (vy wz - vz wy) - uy (vx wz - vz wx) + uz (vx wy - vy wx).
   const Pair t = v * wz - vz * w;
   const Pair terms = u * __builtin_shufflevector(t, t, 1, 0);
-  const double det = terms[0] - terms[1] + uz * (v[0] * w[1] - v[1] * w[0]);
   const Pair mxy = max2(max2(abs2(u), abs2(v)), abs2(w));
-  const double mx = mxy[0], my = mxy[1];
-  const double mz = std::max({std::fabs(uz), std::fabs(vz), std::fabs(wz)});
+  return {terms[0] - terms[1] + uz * (v[0] * w[1] - v[1] * w[0]), mxy[0], mxy[1],
+          std::max({std::fabs(uz), std::fabs(vz), std::fabs(wz)})};
+}
+
+// Returns the sign, or 2 when the filter cannot decide.
+int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const auto [det, mx, my, mz] = orient_terms(a, b, c, d);
   if (!in_filter_range(std::min({mx, my, mz})) || !in_filter_range(std::max({mx, my, mz}))) return 2;
   const double eps = kOrientBound * mx * my * mz;
   if (det > eps) return 1;
@@ -50,13 +59,21 @@ int filtered_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   return 2;
 }
 
-// The hottest function of the construction: rows 0,1 and rows 2,3 side by
-// side in pairs (half the instructions of one row at a time), every value
-// the same expression as one row at a time would round (so the bound below
-// holds as derived); the unweighted instance drops the weight terms at
-// compile time.
+// The power test's determinant and the 3x3 minors of its rows (q_i - p),
+// the values its filter and its exact-in-doubles path read. The hottest
+// function of the construction: rows 0,1 and rows 2,3 side by side in pairs
+// (half the instructions of one row at a time), every value the same
+// expression as one row at a time would round (so the filter's bound holds
+// as derived); the unweighted instance drops the weight terms at compile
+// time.
+struct PowerTerms {
+  double det;
+  Pair m012_013, m023_123;  // the minors of rows 0,1,2 and 0,1,3; 0,2,3 and 1,2,3
+  double mx, my, mz, mh;    // the largest magnitudes of the x, y, z and lifted columns
+};
+
 template <bool kWeighted>
-[[gnu::always_inline]] inline int filtered_power_det(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3,
+[[gnu::always_inline]] inline PowerTerms power_terms(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3,
                                                     const double w[4], const Vec3& p, double wp) {
   const Pair x01 = Pair{q0.x, q1.x} - p.x, x23 = Pair{q2.x, q3.x} - p.x;
   const Pair y01 = Pair{q0.y, q1.y} - p.y, y23 = Pair{q2.y, q3.y} - p.y;
@@ -81,22 +98,53 @@ template <bool kWeighted>
   // Then along h: (h3 m012 - h2 m013) + (h1 m023 - h0 m123).
   const Pair t23 = __builtin_shufflevector(h23, h23, 1, 0) * m012_013, t01 = __builtin_shufflevector(h01, h01, 1, 0) * m023_123;
   const Pair halves = __builtin_shufflevector(t23, t01, 0, 2) - __builtin_shufflevector(t23, t01, 1, 3);
-  const double det = halves[0] + halves[1];
   // The largest magnitudes of the x and y columns in one pair, z and h in another.
   const Pair ax = max2(abs2(x01), abs2(x23)), ay = max2(abs2(y01), abs2(y23)), az = max2(abs2(z01), abs2(z23));
   const Pair ah = kWeighted ? max2(s01 + abs2(d01), s23 + abs2(d23)) : max2(s01, s23);
   const Pair mxy = max2(__builtin_shufflevector(ax, ay, 0, 2), __builtin_shufflevector(ax, ay, 1, 3));
   const Pair mzh = max2(__builtin_shufflevector(az, ah, 0, 2), __builtin_shufflevector(az, ah, 1, 3));
-  const double mx = mxy[0], my = mxy[1], mz = mzh[0], mh = mzh[1];
+  return {halves[0] + halves[1], m012_013, m023_123, mxy[0], mxy[1], mzh[0], mzh[1]};
+}
+
+// Returns the sign, or 2 when the filter cannot decide.
+template <bool kWeighted>
+[[gnu::always_inline]] inline int filtered_power_det(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3,
+                                                    const double w[4], const Vec3& p, double wp) {
+  const PowerTerms t = power_terms<kWeighted>(q0, q1, q2, q3, w, p, wp);
   // mh >= mx^2, my^2, mz^2: its upper limit bounds them too.
-  if (!in_filter_range(std::min({mx, my, mz, mh})) || !(mh < 1e60)) return 2;
-  const double eps = kPowerBound * mx * my * mz * mh;
-  if (det > eps) return 1;
-  if (det < -eps) return -1;
+  if (!in_filter_range(std::min({t.mx, t.my, t.mz, t.mh})) || !(t.mh < 1e60)) return 2;
+  const double eps = kPowerBound * t.mx * t.my * t.mz * t.mh;
+  if (t.det > eps) return 1;
+  if (t.det < -eps) return -1;
   return 2;
 }
 
+int sign(double x) { return (x > 0) - (x < 0); }
+
 }  // namespace
+
+bool Kernel::exact_in_doubles(std::span<const Vec3> points, std::span<const double> weights) {
+  if (points.empty()) return false;
+  // Integers spanning less than 2^9: every difference is at most 511.
+  // Below 2^51, a unit step (hull_conflict) is exact too.
+  const auto span_below = [](double lo, double hi, double limit) { return hi - lo < limit; };
+  const auto small = [](double x) { return std::fabs(x) < 0x1p51 && exact::is_integer(x); };
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& p : points) {
+    if (!(small(p.x) & small(p.y) & small(p.z))) return false;
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  if (!(span_below(lo.x, hi.x, 0x1p9) && span_below(lo.y, hi.y, 0x1p9) && span_below(lo.z, hi.z, 0x1p9)))
+    return false;
+  if (weights.empty()) return true;
+  double wlo = weights[0], whi = weights[0];
+  for (double w : weights) {
+    if (!exact::is_integer(w)) return false;
+    wlo = std::min(wlo, w), whi = std::max(whi, w);
+  }
+  return span_below(wlo, whi, 0x1p19);
+}
 
 int Kernel::orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const int s = filtered_orient3d(a, b, c, d);
@@ -131,14 +179,46 @@ bool Kernel::perturbed_conflict(const Index id[4], Index pid, OrientWithP orient
   // The vertices above p, largest first (picked one at a time: the first
   // nonzero cofactor usually ends it).
   for (;;) {
-    int next = -1;
-    for (int k = 0; k < 4; ++k)
-      if (rank[k] > p_rank && (next < 0 || rank[k] > rank[next])) next = k;
-    if (next < 0) return true;  // p has the largest remaining perturbation: its weight wins
+    int next = 0;
+    for (int k = 1; k < 4; ++k)
+      if (rank[k] > rank[next]) next = k;
+    if (rank[next] <= p_rank) return true;  // p has the largest remaining perturbation: its weight wins
     const int o = orient_with_p(next);
     if (o != 0) return o < 0;
     rank[next] = -1;
   }
+}
+
+// Differences at most 511: the 2x2 minors below 2^19, the determinant
+// below 2^30.
+int Kernel::orient3d_in_doubles(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const int s = sign(orient_terms(a, b, c, d).det);
+  ++(s != 0 ? stats_.orient.filtered : stats_.orient.perturbed);
+  return s;
+}
+
+// Differences at most 512 (a hull test's virtual vertex adds one to the
+// span) and weight differences below 2^19: lifted values below 2^21, 2x2
+// minors at most 2^19, 3x3 minors below 2^30, their products with the
+// lifted values below 2^51 and the determinant below 2^53. The minors are
+// the cofactors the perturbation asks about (see exact_conflict).
+bool Kernel::conflict_in_doubles(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
+  const PowerTerms t = w_ ? power_terms<true>(*q[0], *q[1], *q[2], *q[3], wq, pts_[p], w_[p])
+                          : power_terms<false>(*q[0], *q[1], *q[2], *q[3], wq, pts_[p], 0.0);
+  if (t.det != 0) {
+    ++stats_.power.filtered;
+    return t.det < 0;
+  }
+  ++stats_.power.perturbed;
+  return perturbed_conflict(id, p, [&](int k) {
+    return k == 0 ? sign(t.m023_123[1]) : k == 1 ? -sign(t.m023_123[0]) : k == 2 ? sign(t.m012_013[1]) : -sign(t.m012_013[0]);
+  });
+}
+
+bool Kernel::power_conflict_in_doubles(const std::array<Index, 4>& v, Index p) {
+  const Vec3* q[4] = {&pts_[v[0]], &pts_[v[1]], &pts_[v[2]], &pts_[v[3]]};
+  const double wq[4] = {weight(v[0]), weight(v[1]), weight(v[2]), weight(v[3])};
+  return conflict_in_doubles(q, wq, v.data(), p);
 }
 
 bool Kernel::exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p) {
@@ -170,6 +250,7 @@ bool Kernel::cell_conflict(const Vec3* q[4], const double wq[4], const Index id[
 // the exact stage takes are built only when it cannot decide (out of line, so
 // that the filter's path does not prepare them).
 bool Kernel::power_conflict(const std::array<Index, 4>& v, Index p) {
+  if (in_doubles_) return power_conflict_in_doubles(v, p);
   int s;
   if (w_) {
     const double wq[4] = {w_[v[0]], w_[v[1]], w_[v[2]], w_[v[3]]};
@@ -195,19 +276,27 @@ bool Kernel::hull_conflict(Index a, Index b, Index c, Index p) {
   // p is coplanar with the hull facet. Its orthocircle test equals the power
   // test against any cell (a,b,c,d) with d off the plane, since d's lifted
   // value is multiplied by orient3d(a,b,c,p) = 0. Take d = a moved along an
-  // axis by an exactly representable step, and give it no perturbation.
+  // axis by an exactly representable step (on exact_in_doubles input one
+  // unit, so that the differences stay within 512), and give it no
+  // perturbation.
   const Vec3& pa = pts_[a];
   Vec3 d = pa;
   int od = 0;
   for (int axis = 0; axis < 3 && od == 0; ++axis) {
-    d = axis_offset(pa, axis);
-    od = orient3d(pts_[a], pts_[b], pts_[c], d);
+    if (in_doubles_) {
+      d = pa;
+      (axis == 0 ? d.x : axis == 1 ? d.y : d.z) += 1;
+      od = orient3d_in_doubles(pa, pts_[b], pts_[c], d);
+    } else {
+      d = axis_offset(pa, axis);
+      od = orient3d(pa, pts_[b], pts_[c], d);
+    }
   }
   const Vec3* q[4] = {&pts_[a], &pts_[b], &pts_[c], &d};
   Index id[4] = {a, b, c, kNone};  // d is virtual: never perturbed
   if (od < 0) std::swap(q[0], q[1]), std::swap(id[0], id[1]);
   const double wq[4] = {weight(id[0]), weight(id[1]), weight(c), weight(a)};
-  return cell_conflict(q, wq, id, p);
+  return in_doubles_ ? conflict_in_doubles(q, wq, id, p) : cell_conflict(q, wq, id, p);
 }
 
 int Kernel::power_side_exact(Index a, Index b, Index c, Index d, Index p) {

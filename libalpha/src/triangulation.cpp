@@ -222,6 +222,7 @@ public:
       if (t_.weighted())
         for (std::size_t k = begin; k < end; ++k) o_.weights[k] = t_.weights_[o_.input[k]];
     });
+    in_doubles_ = Kernel::exact_in_doubles(o_.points, o_.weights);
     kernel_ = order_kernel();
     first_ = initial_simplex();
     if (parallel) insert_parallel(threads);
@@ -261,6 +262,7 @@ private:
   Triangulation& t_;
   InsertionOrder& o_;
   Kernel kernel_{nullptr, nullptr};  // on o_.points, once they are copied
+  bool in_doubles_ = false;          // o_'s points are Kernel::exact_in_doubles
   std::array<Index, 4> first_{};     // the initial simplex
   decltype(t_.cells_)& cells_ = t_.cells_;
   Scratch::Array<std::uint32_t> cell_mark_;  // == stamp_: conflict, == stamp_+1: tested, no conflict
@@ -355,7 +357,7 @@ private:
 
   // A kernel on the points in insertion order, with counts of its own.
   Kernel order_kernel() const {
-    return Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data());
+    return Kernel(o_.points.data(), o_.weights.empty() ? nullptr : o_.weights.data(), o_.input.data(), in_doubles_);
   }
 
   bool is_first(Index p) const { return p == first_[0] || p == first_[1] || p == first_[2] || p == first_[3]; }

@@ -6,6 +6,9 @@
 // sign, an exact evaluation (128-bit integers when the inputs are small
 // dyadic numbers such as grid coordinates, GMP otherwise); and, for the
 // power test only, Simulation of Simplicity when the exact value is zero.
+// On input of small integers (exact_in_doubles) the filter's own double
+// values are exact: their signs are final, and a zero goes straight to the
+// perturbation.
 //
 // The perturbation (Devillers & Teillaud 2011, weights perturbed) raises the
 // weight of point i by eps^(N-i): the point with the larger input index has
@@ -19,13 +22,14 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "alpha/geometry.hpp"
 
 namespace alpha {
 
 struct StageCounts {
-  std::uint64_t filtered = 0;   // decided by the floating-point filter
+  std::uint64_t filtered = 0;   // decided in doubles: by the filter, or exactly (exact_in_doubles)
   std::uint64_t exact = 0;      // needed exact arithmetic, nonzero result
   std::uint64_t perturbed = 0;  // exact value zero: decided symbolically
   std::uint64_t calls() const { return filtered + exact + perturbed; }
@@ -49,13 +53,24 @@ public:
   // `weights` may be null (unweighted: all weights zero). `ids`, if given,
   // is each point's input index, which orders the perturbation (a builder
   // that stores the points in another order); null: the position itself.
-  // Arrays are borrowed.
-  Kernel(const Vec3* points, const double* weights, const Index* ids = nullptr)
-      : pts_(points), w_(weights), ids_(ids) {}
+  // Arrays are borrowed. `in_doubles`: the points and weights are
+  // exact_in_doubles (checked by the caller, once).
+  Kernel(const Vec3* points, const double* weights, const Index* ids = nullptr, bool in_doubles = false)
+      : pts_(points), w_(weights), ids_(ids), in_doubles_(in_doubles) {}
+
+  // Whether every coordinate and weight is an integer, the coordinates of
+  // magnitude below 2^51 and spanning less than 2^9 along each axis, the
+  // weights spanning less than 2^19 (grids): then every value of the power
+  // test's and orient3d's filters is an integer below 2^53, so the doubles
+  // are exact.
+  static bool exact_in_doubles(std::span<const Vec3> points, std::span<const double> weights);
 
   // Sign of det[b-a, c-a, d-a]: +1 when d lies on the side of plane abc
   // from which a,b,c appear counter-clockwise. Exact, may be 0.
-  int orient3d(Index a, Index b, Index c, Index d) { return orient3d(pts_[a], pts_[b], pts_[c], pts_[d]); }
+  int orient3d(Index a, Index b, Index c, Index d) {
+    return in_doubles_ ? orient3d_in_doubles(pts_[a], pts_[b], pts_[c], pts_[d])
+                       : orient3d(pts_[a], pts_[b], pts_[c], pts_[d]);
+  }
   int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
   // Whether point p conflicts with the positively oriented cell (a,b,c,d):
@@ -86,6 +101,7 @@ private:
   const Vec3* pts_;
   const double* w_;
   const Index* ids_;
+  bool in_doubles_;
   PredicateStats stats_;
 
   double weight(Index i) const { return w_ ? w_[i] : 0.0; }
@@ -94,8 +110,13 @@ private:
   // Its exact and perturbed stages, when the filter cannot decide.
   bool exact_conflict(const Vec3* q[4], const double wq[4], const Index id[4], Index p);
   [[gnu::noinline]] bool exact_power_conflict(const std::array<Index, 4>& v, Index p);
+  // The same tests when the filters' doubles are exact (in_doubles_).
+  int orient3d_in_doubles(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+  [[gnu::always_inline]] inline bool conflict_in_doubles(const Vec3* q[4], const double wq[4], const Index id[4],
+                                                         Index p);
+  bool power_conflict_in_doubles(const std::array<Index, 4>& v, Index p);
   template <class OrientWithP>
-  bool perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p);
+  [[gnu::always_inline]] inline bool perturbed_conflict(const Index id[4], Index pid, OrientWithP orient_with_p);
 };
 
 }  // namespace alpha
