@@ -164,6 +164,61 @@ TEST_CASE("Integer grid: exact ties, known Betti numbers and volume", "[alpha][d
   for (Index lvl = 0; lvl <= a.spectrum_size(); ++lvl) check_level(a, lvl);
 }
 
+TEST_CASE("Integer grid: exact sizes ranked as the same grid scaled by 2^-3", "[alpha][degenerate]") {
+  // Integer weights 0-3 on a 6^3 grid: sizes that doubles hold exactly
+  // (rank runs taken as one value without exact comparisons) and sizes
+  // they do not (thirds, fifths: compared exactly). Scaled by 2^-3, the
+  // points are not integers and every run is compared exactly; the ranks,
+  // the spectrum (scaled by 2^-6) and the pairs must be the same.
+  std::vector<Vec3> pts = testing::grid_points(6), scaled;
+  std::vector<double> w, scaled_w;
+  std::mt19937_64 rng(3);
+  for (const Vec3& p : pts) {
+    w.push_back(double(rng() % 4));
+    scaled.push_back({p.x / 8, p.y / 8, p.z / 8});
+    scaled_w.push_back(w.back() / 64);
+  }
+  const Triangulation t(pts, w), ts(scaled, scaled_w);
+  const AlphaComplex a(t), as(ts);
+  REQUIRE(a.spectrum_size() == as.spectrum_size());
+  CHECK(a.spectrum_size() > 20);
+  for (Index r = 0; r < a.spectrum_size(); ++r) CHECK(a.spectrum_value(r) / 64 == as.spectrum_value(r));
+  const auto same = [](const Interval& x, const Interval& y) {
+    return x.entry == y.entry && x.mu_low == y.mu_low && x.mu_high == y.mu_high && x.attached == y.attached;
+  };
+  const Simplices& s = a.simplices();
+  REQUIRE(s.num_triangles() == as.simplices().num_triangles());
+  for (Index v = 0; v < t.num_points(); ++v)
+    if (t.status(v) == PointStatus::vertex) CHECK(same(a.vertex_interval(v), as.vertex_interval(v)));
+  for (Index e = 0; e < s.num_edges(); ++e) CHECK(same(a.edge_interval(e), as.edge_interval(e)));
+  for (Index f = 0; f < s.num_triangles(); ++f) CHECK(same(a.triangle_interval(f), as.triangle_interval(f)));
+  for (Index c = 0; c < t.num_cells(); ++c) CHECK(a.cell_entry(c) == as.cell_entry(c));
+  const auto& pairs = a.persistence();
+  const auto& scaled_pairs = as.persistence();
+  REQUIRE(pairs.size() == scaled_pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    CHECK((pairs[k].dim == scaled_pairs[k].dim && pairs[k].birth == scaled_pairs[k].birth &&
+           pairs[k].death == scaled_pairs[k].death));
+  std::size_t ties = 0;
+  CHECK(misordered(t, ranked_entries(t, a), ties) == 0);
+  CHECK(ties > 100);
+  // A size without error is the exact size (GMP), and some are not.
+  const SizeKernel k(t.points().data(), t.weights().data(), true);  // promised: small integers
+  std::size_t exact = 0, inexact = 0;
+  const auto check = [&](const Simplex& x) {
+    const Size z = k.size(x);
+    if (z.error != 0) return void(++inexact);
+    ++exact;
+    CHECK(mpq_class(z.value) == exact_size(k, x));
+  };
+  for (Index e = 0; e < s.num_edges(); ++e) check(Simplex(s.edge(e)[0], s.edge(e)[1]));
+  for (Index f = 0; f < s.num_triangles(); ++f) check(Simplex(s.triangle(f)[0], s.triangle(f)[1], s.triangle(f)[2]));
+  for (Index c = 0; c < t.num_cells(); ++c)
+    if (!t.is_infinite(c)) check(Simplex(t.cell(c).v));
+  CHECK(exact > 1000);
+  CHECK(inexact > 100);
+}
+
 TEST_CASE("Dense ball sample: volume near the hull's at large alpha", "[alpha]") {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -264,6 +264,15 @@ void AlphaComplex::rank_critical() {
     sort_run(b, e, exact, [&](std::size_t k) { return std::optional(exact_fraction(sizes, simplex_at(k))); },
              compare_exact);
   };
+  // A run of exact sizes (width 0: integer input whose sizes doubles hold)
+  // is one value: already in order, one rank.
+  auto exact_run = [&](std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k)
+      if (order[k].width != 0) return false;
+    spectrum_.push_back(order[b].id);
+    for (std::size_t k = b; k < e; ++k) set_rank(order[k].id, Index(spectrum_.size() - 1));
+    return true;
+  };
   // The spectrum grows as the critical values are read for the last time:
   // their pages go back as it goes (it would otherwise add 4 bytes a value
   // to the peak, 69 MiB at 1e6 points).
@@ -275,7 +284,7 @@ void AlphaComplex::rank_critical() {
     double reach = high(order[b]);
     while (e < order.size() && low(order[e]) <= reach) reach = std::max(reach, high(order[e])), ++e;
     if (e - b > 1) {
-      sort_exactly(b, e);
+      if (!exact_run(b, e)) sort_exactly(b, e);
     } else {
       spectrum_.push_back(order[b].id);
       set_rank(order[b].id, Index(spectrum_.size() - 1));

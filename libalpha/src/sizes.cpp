@@ -432,9 +432,14 @@ Local<Approx> approx_local(const Vec3* pts, const double* w, const Simplex& s, b
 namespace {
 
 // The filtered size N / D of a simplex of k + 1 vertices (k > 0), whose
-// leaves were in range (ok) or not.
-Size filtered_size(const Approx& N, const Approx& D, int k, bool ok) {
+// leaves were in range (ok) or not. On small integers (`integers`: the
+// whole input) N and D are exact below 2^53 (see small_fraction); a quotient
+// the double holds exactly (fma: N - value D is exact) then has no error,
+// and equal such sizes need no exact comparison.
+Size filtered_size(const Approx& N, const Approx& D, int k, bool ok, bool integers) {
   double value = N.v / D.v;
+  if (integers && N.p < kExactPermanent && D.p < kExactPermanent && D.v != 0 && std::fma(value, D.v, -N.v) == 0)
+    return {value, 0};
   if (std::isnan(value)) value = HUGE_VAL;  // D = 0: keep values sortable
   const double eN = kSizeN[k] * N.p, eD = kSizeD[k] * D.p;
   if (!ok || !(D.v > eD)) return {value, HUGE_VAL};
@@ -453,7 +458,7 @@ Size SizeKernel::size(const Simplex& simplex) const {
   const Local<Approx> l = approx_local(pts_, w_, s, ok, in_filter_range_);
   Approx N, D;
   size_terms(l, N, D);
-  return filtered_size(N, D, l.k, ok);
+  return filtered_size(N, D, l.k, ok, small_integers_);
 }
 
 Vec3 SizeKernel::center(const Simplex& simplex) const {
@@ -912,7 +917,7 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs,
   if (size && s.n == 3) {  // from the frame: the values size() computes
     Approx N, D;
     triangle_size(l, frame.den, frame.V, N, D);
-    *size = filtered_size(N, D, l.k, ok);
+    *size = filtered_size(N, D, l.k, ok, small_integers_);
   } else if (size) {
     *size = this->size(s);
   }
