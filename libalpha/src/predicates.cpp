@@ -190,7 +190,7 @@ bool Kernel::perturbed_conflict(const Index id[4], Index pid, OrientWithP orient
 }
 
 // Differences at most 512 (with a hull test's virtual vertex): the 2x2
-// minors at most 2^19, the determinant below 2^31.
+// minors at most 2^19, the determinant below 2^30.
 int Kernel::orient3d_in_doubles(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const int s = sign(orient_terms(a, b, c, d).det);
   ++(s != 0 ? stats_.orient.filtered : stats_.orient.perturbed);
