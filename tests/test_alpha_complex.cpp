@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
+#include <span>
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
@@ -267,6 +269,30 @@ TEST_CASE("Translated copies: long runs of near-equal sizes ranked exactly", "[a
   SizeKernel exact(t.points().data(), t.weights().data());
   for (std::size_t k = 0; k < entries.size(); k += 97)
     CHECK(a.spectrum_value(entries[k].first) == exact.rounded_size(entries[k].second));
+}
+
+TEST_CASE("spectrum_values: each rank's spectrum_value, in any order and count", "[alpha][degenerate]") {
+  // Weighted random points with hidden ones, and a grid (sizes tied in
+  // long runs); the ranks shuffled, repeated, and in lists that end on,
+  // before and after a block boundary.
+  const auto random_pts = testing::random_points(400, 91, 4.0);
+  const Triangulation weighted(random_pts, testing::random_weights(400, 92, 0.0, 3.0));
+  const Triangulation grid(testing::grid_points(6));
+  for (const Triangulation* t : {&weighted, &grid}) {
+    const AlphaComplex a(*t);
+    std::vector<Index> all(a.spectrum_size());
+    for (Index r = 0; r < all.size(); ++r) all[r] = r;
+    std::mt19937 rng(7);
+    std::shuffle(all.begin(), all.end(), rng);
+    for (int k = 0; k < 300; ++k) all.push_back(all[rng() % all.size()]);
+    for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(255), std::size_t(256),
+                                std::size_t(257), std::size_t(273), all.size()}) {
+      const auto ranks = std::span(all).first(std::min(n, all.size()));
+      std::vector<double> values(ranks.size(), std::nan(""));
+      a.spectrum_values(ranks, values);
+      for (std::size_t k = 0; k < ranks.size(); ++k) REQUIRE(values[k] == a.spectrum_value(ranks[k]));
+    }
+  }
 }
 
 TEST_CASE("A sliver's imprecise size is ranked exactly among precise ones", "[alpha][degenerate]") {

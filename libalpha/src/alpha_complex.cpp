@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <iterator>
 #include <numeric>
@@ -336,6 +337,53 @@ Simplex AlphaComplex::simplex(Index g) const {
 }
 
 double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rounded_size(simplex(spectrum_[rank])); }
+
+void AlphaComplex::spectrum_values(std::span<const Index> ranks, std::span<double> values) const {
+  assert(values.size() == ranks.size());
+  // Each value reads the spectrum, a simplex record (an edge's, a triangle's
+  // facet code, a cell) and then its points: at a million points every read
+  // misses the cache. Each phase below makes one of these reads for a whole
+  // block, having asked kAhead iterations before for the memory it reads,
+  // so that the misses overlap instead of following each other.
+  constexpr std::size_t kBlock = 256, kAhead = 16;
+  const Triangulation& t = *t_;
+  const Simplices& s = simplices_;
+  const auto prefetch = [](const void* address) { __builtin_prefetch(address); };
+  const auto prefetch_points = [&](const Simplex& x) {
+    for (int i = 0; i < x.n; ++i) {
+      prefetch(&t.point(x.v[i]));
+      if (t.weighted()) prefetch(&t.weights()[x.v[i]]);
+    }
+  };
+  // The record a simplex's vertices are read from first.
+  const auto prefetch_record = [&](Index g) {
+    if (g < ids_.edges) prefetch(&t.point(g));
+    else if (g < ids_.triangles) prefetch(&s.edge(g - ids_.edges));
+    else if (g < ids_.cells) prefetch(s.triangle_record(g - ids_.triangles));
+    else prefetch(&t.cell(g - ids_.cells));
+  };
+  const SizeKernel sizes = size_kernel();
+  std::array<Index, kBlock> id;
+  std::array<Simplex, kBlock> simplex_of;
+  for (std::size_t first = 0; first < ranks.size(); first += kBlock) {
+    const std::size_t n = std::min(kBlock, ranks.size() - first);
+    const Index* r = ranks.data() + first;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j + kAhead < n) prefetch(&spectrum_[r[j + kAhead]]);
+      id[j] = spectrum_[r[j]];
+    }
+    for (std::size_t j = 0; j < n + kAhead; ++j) {
+      if (j < n) prefetch_record(id[j]);
+      // A triangle's vertices are read from its cell, a record further.
+      if (j >= kAhead && id[j - kAhead] >= ids_.triangles && id[j - kAhead] < ids_.cells)
+        prefetch(&t.cell(s.triangle_cell(id[j - kAhead] - ids_.triangles)));
+    }
+    for (std::size_t j = 0; j < n + kAhead; ++j) {
+      if (j < n) prefetch_points(simplex_of[j] = simplex(id[j]));
+      if (j >= kAhead) values[first + j - kAhead] = sizes.rounded_size(simplex_of[j - kAhead]);
+    }
+  }
+}
 
 Index AlphaComplex::level(double alpha_sq) const {
   if (std::isnan(alpha_sq)) fail("alpha complex: alpha_sq is not a number", ErrorKind::Misuse);

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include "alpha/persistence.hpp"
@@ -59,6 +60,11 @@ public:
   // The alpha spectrum: critical values in increasing order.
   std::size_t spectrum_size() const { return spectrum_.size(); }
   double spectrum_value(Index rank) const;  // nearest double to the exact value
+  // spectrum_value of each rank, into values (as long as ranks). For many
+  // ranks at random places (a persistence diagram's): their simplices and
+  // points are read a block at a time, with the reads of later ranks under
+  // way while earlier ones are used.
+  void spectrum_values(std::span<const Index> ranks, std::span<double> values) const;
   // Number of critical values <= alpha_sq (exact): simplices whose entry
   // rank is below this level are present at alpha_sq. Throws alpha::Error
   // for NaN.

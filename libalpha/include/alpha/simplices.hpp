@@ -35,7 +35,7 @@ public:
   std::size_t num_triangles() const { return triangle_facets_.size(); }
   // Vertices in the order of facet kFacet[i] of triangle_cells(f)[0].
   std::array<Index, 3> triangle(Index f) const {
-    const auto& v = t_->cell(triangle_facets_[f] >> 2).v;
+    const auto& v = t_->cell(triangle_cell(f)).v;
     const auto& k = kFacet[triangle_facets_[f] & 3];
     return {v[k[0]], v[k[1]], v[k[2]]};
   }
@@ -43,9 +43,14 @@ public:
   // The two cells sharing the triangle (either may be infinite), the one
   // with the smaller id first.
   std::array<Index, 2> triangle_cells(Index f) const {
-    const Index c = triangle_facets_[f] >> 2;
+    const Index c = triangle_cell(f);
     return {c, t_->cell(c).n[triangle_facets_[f] & 3]};
   }
+  // triangle_cells(f)[0], without reading the cell.
+  Index triangle_cell(Index f) const { return triangle_facets_[f] >> 2; }
+  // Where triangle(f) and triangle_cells(f) start reading, for callers that
+  // prefetch it.
+  const Index* triangle_record(Index f) const { return &triangle_facets_[f]; }
   bool on_hull(Index f) const;
   std::size_t num_hull_triangles() const { return num_hull_triangles_; }
   // Triangle of facet i of cell c, or kNone when that facet contains kInfinite.
