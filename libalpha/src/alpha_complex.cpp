@@ -13,6 +13,7 @@
 #include "alpha/error.hpp"
 #include "exact_size.hpp"
 #include "huge_pages.hpp"
+#include "prefetch.hpp"
 #include "radix_sort.hpp"
 
 namespace alpha {
@@ -32,18 +33,31 @@ public:
   explicit LocalPoints(const Triangulation& t) : local_(t.num_points(), kNone) {
     points_.reserve(t.num_vertices());
     if (t.weighted()) weights_.reserve(t.num_vertices());
-    for (const Cell& c : t.cells())
-      for (const Index v : c.v)
+    const auto cells = t.cells();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (c + kAhead < cells.size())
+        for (const Index v : cells[c + kAhead].v)
+          if (v != kInfinite) alpha::prefetch(&local_[v]), alpha::prefetch(&t.point(v));
+      for (const Index v : cells[c].v)
         if (v != kInfinite && local_[v] == kNone) {
           local_[v] = Index(points_.size());
           points_.push_back(t.point(v));
           if (t.weighted()) weights_.push_back(t.weight(v));
         }
+    }
     small_integers_ = all_small_integers(points_.data(), weights(), points_.size());
     in_filter_range_ = all_in_filter_range(points_.data(), weights(), points_.size());
   }
   SizeKernel kernel() const { return SizeKernel(points_.data(), weights(), small_integers_, in_filter_range_); }
   Index operator[](Index v) const { return local_[v]; }
+  // The local indices are read by input index, at random places.
+  void prefetch(Index v) const {
+    if (v != kInfinite) alpha::prefetch(&local_[v]);
+  }
+  template <class Vertices>
+  void prefetch_all(const Vertices& vs) const {
+    for (const Index v : vs) prefetch(v);
+  }
   Simplex operator()(Simplex s) const {
     for (int i = 0; i < s.n; ++i) s.v[i] = local_[s.v[i]];
     return s;
@@ -104,6 +118,7 @@ void AlphaComplex::rank_critical() {
   edge_attached_.resize(s.num_edges());
   triangle_attached_.resize(s.num_triangles());
   for (Index f = 0; f < s.num_triangles(); ++f) {
+    if (f + kAhead < s.num_triangles()) local.prefetch_all(s.triangle(f + kAhead));
     const auto fv = s.triangle(f);
     for (int k = 0; k < 3; ++k) {  // edge k is opposite vertex k
       const Index e = s.triangle_edges(f)[k];
@@ -111,11 +126,13 @@ void AlphaComplex::rank_critical() {
         edge_attached_[e] = sizes.attached(local(Simplex(fv[(k + 1) % 3], fv[(k + 2) % 3])), local[fv[k]]);
     }
   }
-  for (Index e = 0; e < s.num_edges() && t.weighted(); ++e)
+  for (Index e = 0; e < s.num_edges() && t.weighted(); ++e) {
+    if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
     for (int k = 0; k < 2; ++k) {
       const Index v = s.edge(e)[k];
       if (!vertex_attached_[v]) vertex_attached_[v] = sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - k]]);
     }
+  }
 
   // The critical values are the sizes of the finite cells and of the
   // unattached faces (an attached face enters with a coface, and mu_low,
@@ -177,10 +194,16 @@ void AlphaComplex::rank_critical() {
   auto add_size = [&](Index g) { add(g, sizes.size(local(simplex(g)))); };
   for (Index v = 0; v < t.num_points(); ++v)
     if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add_size(v);
-  for (Index e = 0; e < s.num_edges(); ++e)
+  for (Index e = 0; e < s.num_edges(); ++e) {
+    if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
     if (!edge_attached_[e]) add_size(ids_.edges + e);
+  }
   std::vector<Index> others;
   for (Index f = 0; f < s.num_triangles(); ++f) {
+    // The other cell may lie anywhere.
+    if (f + 2 * kAhead < s.num_triangles()) prefetch(&t.cell(s.triangle_cells(f + 2 * kAhead)[1]));
+    if (f + kAhead < s.num_triangles())
+      for (const Index c : s.triangle_cells(f + kAhead)) local.prefetch_all(t.cell(c).v);
     const auto fv = s.triangle(f);
     others.clear();
     for (const Index c : s.triangle_cells(f)) {
@@ -192,8 +215,10 @@ void AlphaComplex::rank_critical() {
     triangle_attached_[f] = !z;
     if (z) add(ids_.triangles + f, *z);
   }
-  for (Index c = 0; c < t.num_cells(); ++c)
+  for (Index c = 0; c < t.num_cells(); ++c) {
+    if (c + kAhead < t.num_cells()) local.prefetch_all(t.cell(c + kAhead).v);
     if (!t.is_infinite(c)) add_size(ids_.cells + c);
+  }
   radix_sort_in_place(std::span(order), [](const Critical& c) { return c.low; },
                       [](const Critical& c) { return c.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).
@@ -341,14 +366,11 @@ double AlphaComplex::spectrum_value(Index rank) const { return size_kernel().rou
 void AlphaComplex::spectrum_values(std::span<const Index> ranks, std::span<double> values) const {
   assert(values.size() == ranks.size());
   // Each value reads the spectrum, a simplex record (an edge's, a triangle's
-  // facet code, a cell) and then its points: at a million points every read
-  // misses the cache. Each phase below makes one of these reads for a whole
-  // block, having asked kAhead iterations before for the memory it reads,
-  // so that the misses overlap instead of following each other.
-  constexpr std::size_t kBlock = 256, kAhead = 16;
+  // facet code, a cell) and then its points: one phase over a block for
+  // each read, prefetching ahead (prefetch.hpp).
+  constexpr std::size_t kBlock = 256;
   const Triangulation& t = *t_;
   const Simplices& s = simplices_;
-  const auto prefetch = [](const void* address) { __builtin_prefetch(address); };
   const auto prefetch_points = [&](const Simplex& x) {
     for (int i = 0; i < x.n; ++i) {
       prefetch(&t.point(x.v[i]));

@@ -8,18 +8,11 @@
 
 #include "alpha/error.hpp"
 #include "huge_pages.hpp"
+#include "prefetch.hpp"
 #include "radix_sort.hpp"
 
 namespace alpha {
 namespace {
-
-// The loops below visit simplices in filtration order, which is random in
-// memory: at a million points each record they read misses the cache. They
-// ask for the records of the simplex kAhead steps on (and for what those
-// name, 2 kAhead steps on) before reading the current one's, so that the
-// misses overlap.
-constexpr std::size_t kAhead = 16;
-inline void prefetch(const void* address) { __builtin_prefetch(address); }
 
 // Union-find whose root keeps the component's elder member.
 class ElderUnionFind {

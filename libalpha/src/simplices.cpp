@@ -5,6 +5,7 @@
 
 #include "alpha/error.hpp"
 #include "huge_pages.hpp"
+#include "prefetch.hpp"
 
 namespace alpha {
 namespace {
@@ -38,7 +39,14 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   assign_huge(cell_edges, nc, none);
   reserve_huge(edges_, t.num_vertices() + 1 + nc);
   reserve_huge(edge_cells_, t.num_vertices() + 1 + nc);
+  // The rings and the facets' far sides start in the neighbours, which lie
+  // anywhere.
+  const auto prefetch_neighbours = [&](Index c) {
+    if (c + kAhead < t.num_cells())
+      for (const Index n : t.cell(c + Index(kAhead)).n) prefetch(&t.cell(n));
+  };
   for (Index c = 0; c < t.num_cells(); ++c) {
+    prefetch_neighbours(c);
     for (int e = 0; e < 6; ++e) {
       const Index a = t.cell(c).v[kEdge[e][0]], b = t.cell(c).v[kEdge[e][1]];
       if (cell_edges[c][e] != kNone || a == kInfinite || b == kInfinite) continue;
@@ -66,6 +74,7 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   reserve_huge(triangle_edges_, 2 * nc - 3 * infinite_cells / 2);
   auto local_edge = [](int a, int b) { return static_cast<std::size_t>(kLocalEdge[a][b]); };
   for (Index c = 0; c < t.num_cells(); ++c) {
+    prefetch_neighbours(c);
     const Cell& cell = t.cell(c);
     const int inf = t.infinite_position(c);
     for (int i = 0; i < 4; ++i) {
