@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -213,7 +214,9 @@ public:
     std::vector<double> v(ac_->spectrum_size());
     {
       py::gil_scoped_release release;
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = ac_->spectrum_value(alpha::Index(i));
+      std::vector<alpha::Index> ranks(v.size());
+      std::iota(ranks.begin(), ranks.end(), alpha::Index(0));
+      ac_->spectrum_values(ranks, v);
     }
     return array_of(v);
   }
@@ -245,12 +248,20 @@ public:
     std::vector<double> rows;
     {
       py::gil_scoped_release release;
-      const std::vector<alpha::PersistencePair> pairs = ac_->persistence();
+      const std::vector<alpha::PersistencePair>& pairs = ac_->persistence();
+      std::vector<alpha::Index> ranks;
+      for (const alpha::PersistencePair& p : pairs) {
+        ranks.push_back(p.birth);
+        if (p.death != alpha::kNever) ranks.push_back(p.death);
+      }
+      std::vector<double> values(ranks.size());
+      ac_->spectrum_values(ranks, values);
       rows.reserve(3 * pairs.size());
+      std::size_t next = 0;
       for (const alpha::PersistencePair& p : pairs) {
         rows.push_back(p.dim);
-        rows.push_back(ac_->spectrum_value(p.birth));
-        rows.push_back(p.death == alpha::kNever ? INFINITY : ac_->spectrum_value(p.death));
+        rows.push_back(values[next++]);
+        rows.push_back(p.death == alpha::kNever ? INFINITY : values[next++]);
       }
     }
     py::array_t<double> out({py::ssize_t(rows.size() / 3), py::ssize_t(3)});
