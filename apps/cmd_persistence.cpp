@@ -18,6 +18,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/compile.h>
@@ -60,18 +61,25 @@ int run_persistence(const InputOptions& opt) {
   };
   std::array<Column, 2> columns;  // birth, death
   const auto rank_of = [](const alpha::PersistencePair& p, int column) { return column == 0 ? p.birth : p.death; };
+  // Whether a column's text changes at `rank` (last: the rank it shows);
+  // the same rule chooses the ranks to fetch and reads their values back.
+  const auto changes = [](alpha::Index rank, alpha::Index& last) {
+    if (rank == alpha::kNever || rank == last) return false;
+    last = rank;
+    return true;
+  };
   constexpr std::size_t kBlock = 4096;
   std::vector<alpha::Index> ranks;
   std::vector<double> values;
   for (std::size_t first = 0; first < pairs.size(); first += kBlock) {
-    // Zero-length pairs are left out (the complex keeps none; be sure).
     const auto block = std::span(pairs).subspan(first, std::min(kBlock, pairs.size() - first));
-    // The ranks whose text changes, in the order the lines are written.
     ranks.clear();
-    std::array<alpha::Index, 2> previous{columns[0].rank, columns[1].rank};
-    for (const alpha::PersistencePair& p : block)
-      for (int c = 0; c < 2 && p.birth != p.death; ++c)
-        if (rank_of(p, c) != alpha::kNever && rank_of(p, c) != previous[c]) ranks.push_back(previous[c] = rank_of(p, c));
+    std::array<alpha::Index, 2> shown{columns[0].rank, columns[1].rank};
+    for (const alpha::PersistencePair& p : block) {
+      if (p.birth == p.death) continue;  // zero length (the complex keeps none; be sure)
+      for (int c = 0; c < 2; ++c)
+        if (changes(rank_of(p, c), shown[c])) ranks.push_back(rank_of(p, c));
+    }
     values.resize(ranks.size());
     ac.spectrum_values(ranks, values);
     std::size_t next = 0;
@@ -79,19 +87,13 @@ int run_persistence(const InputOptions& opt) {
       if (p.birth == p.death) continue;
       out += char('0' + p.dim);
       for (int c = 0; c < 2; ++c) {
-        out += ' ';
         Column& column = columns[c];
-        const alpha::Index rank = rank_of(p, c);
-        if (rank == alpha::kNever) {
-          out += "inf";
-          continue;
-        }
-        if (rank != column.rank) {
-          column.rank = rank;
+        if (changes(rank_of(p, c), column.rank)) {
           column.text.clear();
           append_value(column.text, values[next++]);
         }
-        out += column.text;
+        out += ' ';
+        out += rank_of(p, c) == alpha::kNever ? std::string_view("inf") : std::string_view(column.text);
       }
       out += '\n';
       ++lines;
