@@ -13,6 +13,14 @@ namespace alpha {
 
 inline constexpr std::size_t kAhead = 16;
 
-inline void prefetch(const void* address) { __builtin_prefetch(address); }
+// GCC counts a prefetch as free of side effects: a helper (a lambda, a
+// member) that only prefetches is then "pure" and its calls are deleted.
+// The empty volatile asm is a side effect, which keeps them.
+inline void prefetch(const void* address) {
+  __builtin_prefetch(address);
+#if defined(__GNUC__)
+  asm volatile("");
+#endif
+}
 
 }  // namespace alpha
