@@ -43,12 +43,14 @@ void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value = T()) {
 // hold nothing else of v go back to the system (Linux; a no-op elsewhere),
 // so that arrays growing meanwhile do not add to the peak. Their contents
 // are lost (they read as zeros if touched again). Called with the previous
-// call's end as begin, no page is left behind.
+// call's end as begin, no page is left behind. In huge pages: a smaller
+// piece of one would split it, and each call flushes the TLB.
+inline constexpr std::uintptr_t kDiscardPage = std::uintptr_t(2) << 20;
 template <class T>
 void discard_read([[maybe_unused]] std::vector<T>& v, [[maybe_unused]] std::size_t begin,
                   [[maybe_unused]] std::size_t end) {
 #ifdef MADV_DONTNEED
-  constexpr std::uintptr_t kPage = 4096;
+  constexpr std::uintptr_t kPage = kDiscardPage;
   const auto address = [&](std::size_t i) { return reinterpret_cast<std::uintptr_t>(v.data() + i); };
   // Not below the array's first whole page: the allocator's own data may
   // share the page before it.
