@@ -191,12 +191,14 @@ void cycle_pairs(const Simplices& s, const FiltrationRanks& r, const std::vector
   HeapColumn column;
   for (std::size_t k = 0; k < killers.size(); ++k) {
     if (k + 2 * kAhead < killers.size()) prefetch(&s.triangle_edges(killers[k + 2 * kAhead]));
-    if (k + kAhead < killers.size())
+    if (k + kAhead < killers.size()) {
+      prefetch(&r.triangle[killers[k + kAhead]]);
       for (const Index e : s.triangle_edges(killers[k + kAhead])) {
         prefetch(&creates_cycle[e]);
         prefetch(&r.edge[e]);
         prefetch(&reduced_at[e]);
       }
+    }
     const Index f = killers[k];
     std::uint64_t p = HeapColumn::kEmpty;  // the largest entry's key
     for_each_entry(f, [&](Index e) {
