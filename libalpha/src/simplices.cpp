@@ -56,7 +56,7 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
   // (the whole ring when it has up to 5 cells), asked for once the
   // neighbours have arrived.
   const auto prefetch_rings = [&](Index c) {
-    if (c + 2 * kAhead < t.num_cells()) prefetch_neighbours(c + Index(kAhead));
+    prefetch_neighbours(c + Index(kAhead));  // checks its own range
     if (c + kAhead < t.num_cells())
       for (const Index n : t.cell(c + Index(kAhead)).n)
         for (const Index m : t.cell(n).n) prefetch(&t.cell(m));
