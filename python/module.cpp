@@ -205,7 +205,7 @@ public:
     if (threads < 1) throw py::value_error("threads must be at least 1");
     py::gil_scoped_release release;
     t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w), threads);
-    ac_ = std::make_unique<alpha::AlphaComplex>(*t_);
+    ac_ = std::make_unique<alpha::AlphaComplex>(*t_, threads);
   }
 
   // Every loop over the complex runs without the GIL (a spectrum of 10^5

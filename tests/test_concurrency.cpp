@@ -244,3 +244,52 @@ TEST_CASE("Persistence of a triangulation built on threads equals the sequential
     CHECK(diagram(a) == diagram(b));
   }
 }
+
+TEST_CASE("An alpha complex built on threads equals the sequential one", "[concurrency][alpha]") {
+  using alpha::Vec3;
+  // From AlphaComplex::kThreadsFrom vertices on the tests run on threads.
+  // Random points; a grid (runs of tens of thousands of equal values, and
+  // attached faces decided exactly); weighted points with hidden ones;
+  // duplicates.
+  std::vector<Vec3> duplicated = testing::random_points(34000, 21);
+  for (int i = 0; i < 3000; ++i) duplicated.push_back(duplicated[std::size_t(i) * 7]);
+  for (int kind = 0; kind < 4; ++kind) {
+    INFO("kind " << kind);
+    const std::vector<Vec3> points = kind == 0   ? testing::random_points(40000, 22)
+                                     : kind == 1 ? testing::grid_points(33)
+                                     : kind == 2 ? testing::random_points(40000, 23, 34.0)
+                                                 : duplicated;
+    const std::vector<double> weights =
+        kind == 2 ? testing::random_weights(40000, 24, 0.0, 1.0) : std::vector<double>{};
+    const alpha::Triangulation t(points, weights);
+    REQUIRE(t.num_vertices() >= alpha::AlphaComplex::kThreadsFrom);
+    if (kind == 2) CHECK(t.num_hidden() > 0);
+    const alpha::AlphaComplex one(t), two(t, 2), three(t, 3);
+    for (const alpha::AlphaComplex* other : {&two, &three}) {
+      REQUIRE(other->spectrum_size() == one.spectrum_size());
+      bool same = true;
+      auto same_interval = [](const alpha::Interval& a, const alpha::Interval& b) {
+        return a.entry == b.entry && a.mu_low == b.mu_low && a.mu_high == b.mu_high && a.attached == b.attached;
+      };
+      for (alpha::Index v = 0; same && v < t.num_points(); ++v)
+        same = same_interval(one.vertex_interval(v), other->vertex_interval(v));
+      for (alpha::Index e = 0; same && e < one.simplices().num_edges(); ++e)
+        same = same_interval(one.edge_interval(e), other->edge_interval(e));
+      for (alpha::Index f = 0; same && f < one.simplices().num_triangles(); ++f)
+        same = same_interval(one.triangle_interval(f), other->triangle_interval(f));
+      for (alpha::Index c = 0; same && c < t.num_cells(); ++c) same = one.cell_entry(c) == other->cell_entry(c);
+      for (alpha::Index r = 0; same && r < one.spectrum_size(); ++r)
+        same = one.spectrum_value(r) == other->spectrum_value(r);
+      CHECK(same);
+      auto pairs = [](const alpha::AlphaComplex& complex) {
+        std::vector<std::array<alpha::Index, 5>> list;
+        for (const auto& p : complex.persistence())
+          list.push_back({alpha::Index(p.dim), p.birth, p.death, p.birth_simplex, p.death_simplex});
+        return list;
+      };
+      CHECK(pairs(one) == pairs(*other));
+      // The sizes are computed once each, whatever the threads.
+      CHECK(other->size_stats().compare.calls() == one.size_stats().compare.calls());
+    }
+  }
+}

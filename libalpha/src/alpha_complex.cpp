@@ -5,14 +5,17 @@
 #include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <numeric>
 #include <optional>
 #include <tuple>
 
 #include "alpha/error.hpp"
+#include "alpha/uninitialized_allocator.hpp"
 #include "exact_size.hpp"
 #include "huge_pages.hpp"
+#include "parallel.hpp"
 #include "prefetch.hpp"
 #include "radix_sort.hpp"
 
@@ -88,7 +91,10 @@ SizeKernel AlphaComplex::size_kernel() const {
   return SizeKernel(t_->points().data(), t_->weighted() ? t_->weights().data() : nullptr);
 }
 
-AlphaComplex::AlphaComplex(const Triangulation& t) : t_(&t), simplices_(t) {
+AlphaComplex::AlphaComplex(const Triangulation& t, unsigned threads)
+    : t_(&t),
+      threads_(t.num_vertices() < kThreadsFrom ? 1 : std::clamp(threads, 1u, kMaxThreads)),
+      simplices_(t) {
   const Simplices& s = simplices_;
   ids_ = {Index(t.num_points()), Index(t.num_points() + s.num_edges()),
           Index(t.num_points() + s.num_edges() + s.num_triangles())};
@@ -106,7 +112,12 @@ void AlphaComplex::rank_critical() {
   const Triangulation& t = *t_;
   const Simplices& s = simplices_;
   const LocalPoints local(t);
-  SizeKernel sizes = local.kernel();
+  // A kernel for each thread, its counters on cache lines of its own (they
+  // change at every test), summed at the end.
+  struct alignas(64) ThreadKernel {
+    SizeKernel sizes;
+  };
+  std::vector<ThreadKernel> kernels(threads_, {local.kernel()});
 
   // Attachment depends on no size: a face is attached when the vertex of a
   // coface opposite to it lies inside its smallest orthogonal sphere. (Sums
@@ -117,21 +128,35 @@ void AlphaComplex::rank_critical() {
   vertex_attached_.resize(t.num_points());
   edge_attached_.resize(s.num_edges());
   triangle_attached_.resize(s.num_triangles());
-  for (Index f = 0; f < s.num_triangles(); ++f) {
-    if (f + kAhead < s.num_triangles()) local.prefetch_all(s.triangle(f + kAhead));
-    const auto fv = s.triangle(f);
-    for (int k = 0; k < 3; ++k) {  // edge k is opposite vertex k
-      const Index e = s.triangle_edges(f)[k];
-      if (!edge_attached_[e])
-        edge_attached_[e] = sizes.attached(local(Simplex(fv[(k + 1) % 3], fv[(k + 2) % 3])), local[fv[k]]);
-    }
+  {
+    ThreadFlags attached(edge_attached_, threads_);
+    in_parallel(threads_, s.num_triangles(), [&](unsigned k, std::size_t begin, std::size_t end) {
+      std::vector<bool>& mine = attached.of(k);
+      for (Index f = Index(begin); f < end; ++f) {
+        if (f + kAhead < s.num_triangles()) local.prefetch_all(s.triangle(f + kAhead));
+        const auto fv = s.triangle(f);
+        for (int i = 0; i < 3; ++i) {  // edge i is opposite vertex i
+          const Index e = s.triangle_edges(f)[i];
+          if (!mine[e])
+            mine[e] = kernels[k].sizes.attached(local(Simplex(fv[(i + 1) % 3], fv[(i + 2) % 3])), local[fv[i]]);
+        }
+      }
+    });
+    attached.merge();
   }
-  for (Index e = 0; e < s.num_edges() && t.weighted(); ++e) {
-    if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
-    for (int k = 0; k < 2; ++k) {
-      const Index v = s.edge(e)[k];
-      if (!vertex_attached_[v]) vertex_attached_[v] = sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - k]]);
-    }
+  if (t.weighted()) {
+    ThreadFlags attached(vertex_attached_, threads_);
+    in_parallel(threads_, s.num_edges(), [&](unsigned k, std::size_t begin, std::size_t end) {
+      std::vector<bool>& mine = attached.of(k);
+      for (Index e = Index(begin); e < end; ++e) {
+        if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
+        for (int i = 0; i < 2; ++i) {
+          const Index v = s.edge(e)[i];
+          if (!mine[v]) mine[v] = kernels[k].sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - i]]);
+        }
+      }
+    });
+    attached.merge();
   }
 
   // The critical values are the sizes of the finite cells and of the
@@ -164,12 +189,7 @@ void AlphaComplex::rank_critical() {
     const double x = low(c) + double(c.width);
     return std::isnan(x) ? HUGE_VAL : x;
   };
-  // Reserved for every triangle (pages of the attached ones' slots are
-  // never touched).
-  std::vector<Critical> order;
-  reserve_huge(order, t.num_finite_cells() + t.num_vertices() +
-                std::count(edge_attached_.begin(), edge_attached_.end(), false) + s.num_triangles());
-  auto add = [&](Index g, Size z) {
+  const auto critical = [&](SizeKernel& sizes, Index g, Size z) {
     // Where the filter fails (nearly flat simplices) its value says nothing
     // about the place in the order: take the exact size's nearest double,
     // within half an ulp (an unbounded error if it overflows).
@@ -189,36 +209,73 @@ void AlphaComplex::rank_critical() {
       width = float(hi - lo);
       while (lo + double(width) < hi) width = next_up(width);
     }
-    order.push_back({ordered(lo), width, g});
+    return Critical{ordered(lo), width, g};
   };
-  auto add_size = [&](Index g) { add(g, sizes.size(local(simplex(g)))); };
-  for (Index v = 0; v < t.num_points(); ++v)
-    if (t.status(v) == PointStatus::vertex && !vertex_attached_[v]) add_size(v);
-  for (Index e = 0; e < s.num_edges(); ++e) {
-    if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
-    if (!edge_attached_[e]) add_size(ids_.edges + e);
-  }
-  std::vector<Index> others;
-  for (Index f = 0; f < s.num_triangles(); ++f) {
-    // The other cell may lie anywhere.
-    if (f + 2 * kAhead < s.num_triangles()) prefetch(&t.cell(s.triangle_cells(f + 2 * kAhead)[1]));
-    if (f + kAhead < s.num_triangles())
-      for (const Index c : s.triangle_cells(f + kAhead)) local.prefetch_all(t.cell(c).v);
-    const auto fv = s.triangle(f);
-    others.clear();
-    for (const Index c : s.triangle_cells(f)) {
-      if (t.is_infinite(c)) continue;
-      const auto& cv = t.cell(c).v;
-      others.push_back(local[cv[0] + cv[1] + cv[2] + cv[3] - fv[0] - fv[1] - fv[2]]);
+  // Room for every simplex of a kind at once (below), never touched where
+  // not written. The order of the values does not matter: they are sorted
+  // on (lower end, id), distinct keys.
+  std::vector<Critical, UninitializedAllocator<Critical>> order;
+  const std::size_t room = t.num_points() + s.num_edges() + s.num_triangles() + t.num_cells();
+  reserve_huge(order, room);
+  order.resize(room);
+  std::size_t filled = 0;
+  // The values of items [0, n) of one kind, on the threads: each share is
+  // written from the slot of its first item on, then moved down to follow
+  // the previous share; the pages left behind go back. add(k, item, out)
+  // writes item's value, if it has one, at out and advances it.
+  const auto add_all = [&](std::size_t n, auto add) {
+    std::vector<std::array<std::size_t, 2>> written(threads_);
+    in_parallel(threads_, n, [&](unsigned k, std::size_t begin, std::size_t end) {
+      Critical* const first = order.data() + filled + begin;
+      Critical* out = first;
+      for (std::size_t i = begin; i < end; ++i) add(k, Index(i), out);
+      written[k] = {begin, std::size_t(out - first)};
+    });
+    const std::size_t base = filled;
+    for (const auto& [begin, count] : written) {
+      std::memmove(order.data() + filled, order.data() + base + begin, count * sizeof(Critical));
+      filled += count;
     }
-    const std::optional<Size> z = sizes.size_unless_attached(local(Simplex(fv[0], fv[1], fv[2])), others);
-    triangle_attached_[f] = !z;
-    if (z) add(ids_.triangles + f, *z);
+    discard_unused(order, filled, base + n);
+  };
+  add_all(t.num_points(), [&](unsigned k, Index v, Critical*& out) {
+    if (t.status(v) == PointStatus::vertex && !vertex_attached_[v])
+      *out++ = critical(kernels[k].sizes, v, kernels[k].sizes.size(local(Simplex(v))));
+  });
+  add_all(s.num_edges(), [&](unsigned k, Index e, Critical*& out) {
+    if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
+    if (!edge_attached_[e])
+      *out++ = critical(kernels[k].sizes, ids_.edges + e,
+                        kernels[k].sizes.size(local(Simplex(s.edge(e)[0], s.edge(e)[1]))));
+  });
+  {
+    ThreadFlags attached(triangle_attached_, threads_);
+    add_all(s.num_triangles(), [&](unsigned k, Index f, Critical*& out) {
+      // The other cell may lie anywhere.
+      if (f + 2 * kAhead < s.num_triangles()) prefetch(&t.cell(s.triangle_cells(f + 2 * kAhead)[1]));
+      if (f + kAhead < s.num_triangles())
+        for (const Index c : s.triangle_cells(f + kAhead)) local.prefetch_all(t.cell(c).v);
+      const auto fv = s.triangle(f);
+      std::array<Index, 2> others;
+      std::size_t n = 0;
+      for (const Index c : s.triangle_cells(f)) {
+        if (t.is_infinite(c)) continue;
+        const auto& cv = t.cell(c).v;
+        others[n++] = local[cv[0] + cv[1] + cv[2] + cv[3] - fv[0] - fv[1] - fv[2]];
+      }
+      const std::optional<Size> z =
+          kernels[k].sizes.size_unless_attached(local(Simplex(fv[0], fv[1], fv[2])), std::span(others.data(), n));
+      attached.of(k)[f] = !z;
+      if (z) *out++ = critical(kernels[k].sizes, ids_.triangles + f, *z);
+    });
+    attached.merge();
   }
-  for (Index c = 0; c < t.num_cells(); ++c) {
+  add_all(t.num_cells(), [&](unsigned k, Index c, Critical*& out) {
     if (c + kAhead < t.num_cells()) local.prefetch_all(t.cell(c + kAhead).v);
-    if (!t.is_infinite(c)) add_size(ids_.cells + c);
-  }
+    if (!t.is_infinite(c))
+      *out++ = critical(kernels[k].sizes, ids_.cells + c, kernels[k].sizes.size(local(cell_simplex(t, c))));
+  });
+  order.resize(filled);
   radix_sort_in_place(std::span(order), [](const Critical& c) { return c.low; },
                       [](const Critical& c) { return c.id; });
   // Entry ranks of the critical simplices (faces: their own size's rank).
@@ -285,6 +342,7 @@ void AlphaComplex::rank_critical() {
   std::vector<ExactSize> exact;
   auto sort_exactly = [&](std::size_t b, std::size_t e) {
     auto simplex_at = [&](std::size_t k) { return local(simplex(order[k].id)); };
+    SizeKernel& sizes = kernels[0].sizes;
     if (sort_run(b, e, small, [&](std::size_t k) { return small_fraction(sizes, simplex_at(k)); }, compare_small))
       return;
     sort_run(b, e, exact, [&](std::size_t k) { return std::optional(exact_fraction(sizes, simplex_at(k))); },
@@ -320,7 +378,7 @@ void AlphaComplex::rank_critical() {
   release(order);
   spectrum_.shrink_to_fit();
 
-  size_stats_ = sizes.stats();
+  for (const ThreadKernel& k : kernels) size_stats_ += k.sizes.stats();
   size_stats_.compare += run_compares;
 }
 

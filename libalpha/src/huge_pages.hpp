@@ -46,8 +46,8 @@ void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value = T()) {
 // call's end as begin, no page is left behind. In huge pages: a smaller
 // piece of one would split it, and each call flushes the TLB.
 inline constexpr std::uintptr_t kDiscardPage = std::uintptr_t(2) << 20;
-template <class T>
-void discard_read([[maybe_unused]] std::vector<T>& v, [[maybe_unused]] std::size_t begin,
+template <class T, class A>
+void discard_read([[maybe_unused]] std::vector<T, A>& v, [[maybe_unused]] std::size_t begin,
                   [[maybe_unused]] std::size_t end) {
 #ifdef MADV_DONTNEED
   constexpr std::uintptr_t kPage = kDiscardPage;
@@ -60,10 +60,23 @@ void discard_read([[maybe_unused]] std::vector<T>& v, [[maybe_unused]] std::size
 #endif
 }
 
+// v[begin, end) holds nothing that will be read: the huge pages wholly
+// inside it go back to the system (Linux; a no-op elsewhere).
+template <class T, class A>
+void discard_unused([[maybe_unused]] std::vector<T, A>& v, [[maybe_unused]] std::size_t begin,
+                    [[maybe_unused]] std::size_t end) {
+#ifdef MADV_DONTNEED
+  constexpr std::uintptr_t kPage = kDiscardPage;
+  const auto first = (reinterpret_cast<std::uintptr_t>(v.data() + begin) + kPage - 1) & ~(kPage - 1);
+  const auto last = reinterpret_cast<std::uintptr_t>(v.data() + end) & ~(kPage - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#endif
+}
+
 // Frees v's storage (v = {} would keep it: that assigns an empty list).
-template <class T>
-void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
+template <class T, class A>
+void release(std::vector<T, A>& v) {
+  std::vector<T, A>().swap(v);
 }
 
 }  // namespace alpha

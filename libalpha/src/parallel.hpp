@@ -19,6 +19,25 @@ void in_parallel(unsigned threads, std::size_t n, F f) {
   f(0u, std::size_t(0), n / threads);
 }
 
+// Flags that threads set, each in a copy of its own (the first thread in
+// the flags themselves: no two threads share a word of a vector<bool>);
+// merge() ors the other copies in.
+class ThreadFlags {
+public:
+  ThreadFlags(std::vector<bool>& flags, unsigned threads)
+      : flags_(flags), copies_(threads - 1, std::vector<bool>(flags.size())) {}
+  std::vector<bool>& of(unsigned thread) { return thread == 0 ? flags_ : copies_[thread - 1]; }
+  void merge() {
+    for (const std::vector<bool>& copy : copies_)
+      for (std::size_t i = 0; i < copy.size(); ++i)
+        if (copy[i]) flags_[i] = true;
+  }
+
+private:
+  std::vector<bool>& flags_;
+  std::vector<std::vector<bool>> copies_;
+};
+
 // std::sort(items, less) with each thread's range sorted on its own, then
 // merged. `less` must be a strict total order, so that the result is the
 // same for any number of threads.

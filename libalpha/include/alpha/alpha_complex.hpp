@@ -52,7 +52,13 @@ struct ShapeBoundary {
 
 class AlphaComplex {
 public:
-  explicit AlphaComplex(const Triangulation& t);
+  // The size and attachment tests run on `threads` threads; the complex is
+  // the same for any number. At most kMaxThreads (each keeps a copy of the
+  // attached flags), and only from kThreadsFrom vertices on (below, starting
+  // them costs about what they save).
+  static constexpr unsigned kMaxThreads = 64;
+  static constexpr std::size_t kThreadsFrom = std::size_t(1) << 15;
+  explicit AlphaComplex(const Triangulation& t, unsigned threads = 1);
 
   const Triangulation& triangulation() const { return *t_; }
   const Simplices& simplices() const { return simplices_; }
@@ -114,6 +120,7 @@ private:
   };
 
   const Triangulation* t_;
+  unsigned threads_;
   Simplices simplices_;
   FiltrationRanks ranks_;
   std::vector<Bounds> vertex_bounds_, edge_bounds_;

@@ -59,6 +59,10 @@ int compare_filtered(const Size& a, double alpha_sq);
 struct SizeStats {
   StageCounts compare;   // 'perturbed' counts exact ties (no perturbation is used)
   StageCounts attached;  // 'perturbed' counts points exactly on the sphere
+  SizeStats& operator+=(const SizeStats& o) {
+    compare += o.compare, attached += o.attached;
+    return *this;
+  }
 };
 
 class SizeKernel {
