@@ -18,6 +18,7 @@
 #include <gudhi/Simplex_tree.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -77,6 +78,7 @@ struct Side {
 struct Result {
   Side ours, cgal, gudhi, cgal_triangulation;
   std::vector<double> ours_triangulation, ours_complex;  // the split of ours
+  std::vector<double> ours_threads;                      // wall seconds on kThreads threads
   std::size_t memory_bytes = 0;                          // Triangulation + AlphaComplex
   std::size_t spectrum = 0, cgal_spectrum = 0;
   std::size_t pairs = 0, gudhi_pairs = 0;                // persistence pairs of positive length
@@ -96,6 +98,19 @@ void run_ours(const Case& c, Result& r) {
   }));
   r.ours_triangulation.push_back(split[0]);
   r.ours_complex.push_back(split[1]);
+}
+
+// Ours again on two threads (the machine's cores), timed by the wall
+// clock: CPU time would add up the threads. The pairs must be the same.
+constexpr unsigned kThreads = 2;
+void run_ours_on_threads(const Case& c, Result& r) {
+  const auto start = std::chrono::steady_clock::now();
+  const alpha::Triangulation t(c.points, c.weights, kThreads);
+  const alpha::AlphaComplex a(t, kThreads);
+  const std::size_t pairs = a.persistence().size();
+  r.ours_threads.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (pairs != r.pairs)
+    std::fprintf(stderr, "%s: %zu pairs on threads, %zu sequential\n", c.name.c_str(), pairs, r.pairs);
 }
 
 std::vector<K::Point_3> cgal_points(const Case& c) {
@@ -196,15 +211,19 @@ int main(int argc, char** argv) {
       {"grid 47^3", testing::grid_points(47), {}, 3, true},
   };
 
-  std::printf("%-12s %7s %4s %7s %7s %7s %8s %8s %7s %7s %8s %8s %9s %10s %10s %11s %9s %9s %8s %8s\n", "set", "n",
-              "reps", "tri s", "alpha s", "ours s", "CGAL s", "GUDHI s", "o/CGAL", "o/GUDHI", "CGALdt s", "o/CGALdt",
-              "ours B/pt", "oursRSS/pt", "CGALRSS/pt", "GUDHIRSS/pt", "spectrum", "CGALspec", "pairs", "GUDHIprs");
+  std::printf("%-12s %7s %4s %7s %7s %7s %8s %8s %7s %7s %8s %8s %8s %8s %9s %10s %10s %11s %9s %9s %8s %8s\n", "set",
+              "n", "reps", "tri s", "alpha s", "ours s", "CGAL s", "GUDHI s", "o/CGAL", "o/GUDHI", "CGALdt s",
+              "o/CGALdt", "j2wall s", "j2/CGdt", "ours B/pt", "oursRSS/pt", "CGALRSS/pt", "GUDHIRSS/pt", "spectrum",
+              "CGALspec", "pairs", "GUDHIprs");
   std::fflush(stdout);
   // Ours on every set first, then the peers: their heaps (CGAL's and
   // GUDHI's many small blocks) would otherwise change our RSS growth.
   std::vector<Result> results(cases.size());
   for (std::size_t i = 0; i < cases.size(); ++i)
-    for (int rep = 0; rep < cases[i].reps; ++rep) run_ours(cases[i], results[i]);
+    for (int rep = 0; rep < cases[i].reps; ++rep) {
+      run_ours(cases[i], results[i]);
+      run_ours_on_threads(cases[i], results[i]);
+    }
   for (std::size_t i = 0; i < cases.size(); ++i) {
     if (cases[i].peers) run_cgal(cases[i], results[i]), run_gudhi(cases[i], results[i]);
     run_cgal_triangulation(cases[i], results[i]);  // once, on every set
@@ -224,7 +243,9 @@ int main(int argc, char** argv) {
       std::printf("%8s %8s %7s %7s ", "-", "-", "-", "-");
     }
     const double cgal_triangulation = r.cgal_triangulation.median_seconds();
-    std::printf("%8.3f %8.3f ", cgal_triangulation, ours / cgal_triangulation);
+    const double threads = bench::median(r.ours_threads);
+    std::printf("%8.3f %8.3f %8.3f %8.3f ", cgal_triangulation, ours / cgal_triangulation, threads,
+                threads / cgal_triangulation);
     std::printf("%9.1f %10.1f ", r.memory_bytes / n, r.ours.peak_bytes / n);
     if (c.peers)
       std::printf("%10.1f %11.1f %9zu %9zu %8zu %8zu\n", r.cgal.peak_bytes / n, r.gudhi.peak_bytes / n, r.spectrum,

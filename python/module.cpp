@@ -194,9 +194,9 @@ py::dict surface_dict(const molecule::Surface& s) {
 }
 
 // The triangulation and its complex, owned together (the complex refers to
-// the triangulation). threads > 1 builds the triangulation on threads (2^15
-// points or more): its cells are numbered otherwise, so shape_mesh lists
-// the same faces in another order; everything else is the same.
+// the triangulation). threads > 1 builds both on threads (2^15 points or
+// more): the triangulation's cells are numbered otherwise, so shape_mesh
+// lists the same faces in another order; everything else is the same.
 class PyAlphaComplex {
 public:
   PyAlphaComplex(const Points& points, const std::optional<Points>& weights, unsigned threads) {

@@ -104,7 +104,8 @@ AlphaComplex::AlphaComplex(const Triangulation& t, unsigned threads)
 }
 
 const std::vector<PersistencePair>& AlphaComplex::persistence() const {
-  std::call_once(pairs_->once, [this] { pairs_->pairs = persistence_pairs(*t_, simplices_, ranks_); });
+  std::call_once(pairs_->once,
+                 [this] { pairs_->pairs = persistence_pairs(*t_, simplices_, ranks_, false, threads_); });
   return pairs_->pairs;
 }
 

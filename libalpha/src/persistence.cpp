@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 #include <span>
+#include <thread>
 #include <tuple>
 
 #include "alpha/error.hpp"
@@ -91,7 +92,10 @@ private:
 // are read back at the end. Zero-length ones are dropped unless kept.
 struct Pairs {
   bool keep_zero_length;
-  std::array<std::vector<std::array<Index, 2>>, 3> simplices;
+  // Each dimension's list on cache lines of its own: dimensions 0 and 2
+  // grow side by side on threads.
+  struct alignas(64) List : std::vector<std::array<Index, 2>> {};
+  std::array<List, 3> simplices;
   void add(int dim, Index birth, Index death, Index birth_simplex, Index death_simplex) {
     if (keep_zero_length || birth != death) simplices[dim].push_back({birth_simplex, death_simplex});
   }
@@ -224,10 +228,19 @@ void cycle_pairs(const Simplices& s, const FiltrationRanks& r, const std::vector
   }
 }
 
-void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r, Pairs& pairs) {
-  // One dimension at a time, each freeing its arrays before the next.
-  std::vector<char> creates_cycle = vertex_pairs(t, s, r, pairs);
-  const std::vector<Index> killers = complement_pairs(t, s, r, pairs);
+void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRanks& r, Pairs& pairs, unsigned threads) {
+  // One dimension at a time, each freeing its arrays before the next; on
+  // threads, dimensions 0 and 2 side by side (they share no array).
+  std::vector<char> creates_cycle;
+  std::vector<Index> killers;
+  const auto dimension_0 = [&] { creates_cycle = vertex_pairs(t, s, r, pairs); };
+  if (threads > 1) {
+    const std::jthread side(dimension_0);
+    killers = complement_pairs(t, s, r, pairs);
+  } else {
+    dimension_0();
+    killers = complement_pairs(t, s, r, pairs);
+  }
   cycle_pairs(s, r, killers, creates_cycle, pairs);
   for (Index e = 0; e < s.num_edges(); ++e)
     if (creates_cycle[e] == 1) pairs.add(1, r.edge[e], kNever, e, kNone);
@@ -236,7 +249,7 @@ void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRank
 }  // namespace
 
 std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Simplices& s,
-                                               const FiltrationRanks& r, bool keep_zero_length) {
+                                               const FiltrationRanks& r, bool keep_zero_length, unsigned threads) {
   Pairs pairs{keep_zero_length, {}};
   // Bounds on the pairs (of dimension 0 born at distinct vertices, 1 at
   // distinct edges, 2 dying at distinct cells), reserved as address space
@@ -244,7 +257,7 @@ std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Sim
   reserve_huge(pairs.simplices[0], t.num_points());
   reserve_huge(pairs.simplices[1], s.num_edges());
   reserve_huge(pairs.simplices[2], t.num_cells());
-  find_pairs(t, s, r, pairs);
+  find_pairs(t, s, r, pairs, threads);
   const std::array<const std::vector<Index>*, 4> ranks{&r.vertex, &r.edge, &r.triangle, &r.cell};
   std::vector<PersistencePair> list;
   reserve_huge(list, pairs.simplices[0].size() + pairs.simplices[1].size() + pairs.simplices[2].size());

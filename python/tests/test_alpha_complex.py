@@ -59,7 +59,7 @@ def test_weighted_vertex_values():
 
 
 def test_threads_same_complex():
-    # 2^15 points or more are triangulated on the threads: the same
+    # 2^15 points or more are triangulated, and their complex built, on the threads: the same
     # spectrum, counts, Betti numbers, diagram and shape (faces in another order).
     p = np.random.default_rng(5).uniform(0, 1, (40000, 3))
     one, two = alphapocket.AlphaComplex(p), alphapocket.AlphaComplex(p, threads=2)

@@ -34,9 +34,11 @@ struct PersistencePair {
 };
 
 // The pairs sorted by (dim, birth, death), with or without the zero-length
-// ones (birth == death: they never change a Betti number).
+// ones (birth == death: they never change a Betti number). With threads > 1,
+// dimensions 0 and 2 are paired side by side; the pairs are the same.
 std::vector<PersistencePair> persistence_pairs(const Triangulation& t, const Simplices& s,
-                                               const FiltrationRanks& ranks, bool keep_zero_length = false);
+                                               const FiltrationRanks& ranks, bool keep_zero_length = false,
+                                               unsigned threads = 1);
 
 // Betti numbers b0, b1, b2 of the sub-complex of simplices with rank <= r.
 std::array<std::size_t, 3> betti_at(const std::vector<PersistencePair>& pairs, Index r);
