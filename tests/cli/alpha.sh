@@ -189,7 +189,8 @@ case $case_name in
     grep -q '172 persistence pairs' "$tmp/err" || fail "pair count not logged"
     ;;
   persistence_threads)
-    # 2^15 points or more are triangulated on -j threads: the cells are
+    # 2^15 points or more are triangulated, their complex built and the
+    # diagram's 230,000 lines formatted on -j threads: the cells are
     # numbered otherwise, the diagram and the counts stay the same.
     awk 'BEGIN { srand(7); for (i = 0; i < 40000; i++) printf "%.9f %.9f %.9f\n", rand(), rand(), rand() }' >"$tmp/cloud.xyz"
     run persistence "$tmp/cloud.xyz"
