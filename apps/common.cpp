@@ -95,7 +95,8 @@ void add_input_options(CLI::App& sub, InputOptions& opt) {
 
 void add_threads_option(CLI::App& sub, unsigned& threads) {
   sub.add_option("-j,--jobs", threads,
-                 "Threads building the triangulation (from 2^15 points on) and the alpha complex (the output is the same for any number)")
+                 "Threads for the triangulation and what follows, from 2^15 points on (the output is the same for "
+                 "any number)")
       ->capture_default_str()
       ->type_name("N")
       ->check(CLI::Range(1u, 254u).description(""));
@@ -270,7 +271,8 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
                in.triangulation->weighted() ? "regular" : "Delaunay", build_time.seconds(),
                in.triangulation->num_vertices(), in.triangulation->num_finite_cells());
   Stopwatch complex_time;
-  in.complex = naming_file(opt.file, [&] { return std::make_unique<alpha::AlphaComplex>(*in.triangulation, opt.threads); });
+  in.complex = naming_file(opt.file,
+                           [&] { return std::make_unique<alpha::AlphaComplex>(*in.triangulation, opt.threads); });
   // Not the persistence pairs: they are computed when a command needs them.
   spdlog::info("alpha complex: {:.3f} s, {} critical values", complex_time.seconds(), in.complex->spectrum_size());
   return in;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // discard_read (libalpha/src/huge_pages.hpp): the pages it gives back hold
 // only the part already read, never a value at or after `end`, and
-// successive calls leave no page of the read part behind.
+// successive calls leave no page of the read part behind; discard_unused
+// gives back no page that holds a value outside its range.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -37,5 +38,27 @@ TEST_CASE("discard_read keeps every value not yet read", "[memory]") {
     }
   REQUIRE(kept < 2 * alpha::kDiscardPage / sizeof(std::uint32_t));
   REQUIRE(kept < read);  // some pages did go back
+#endif
+}
+
+TEST_CASE("discard_unused gives back only pages wholly inside the range", "[memory]") {
+  const std::size_t n = 1 << 22;  // 16 MiB
+  std::vector<std::uint32_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = std::uint32_t(i) | 1;  // never 0
+  // A range starting and ending inside pages, as the critical values' tail.
+  const std::size_t begin = 777 + alpha::kDiscardPage / sizeof(std::uint32_t), end = n - 4099;
+  alpha::discard_unused(v, begin, end);
+  for (std::size_t i = 0; i < begin; ++i) REQUIRE(v[i] == (std::uint32_t(i) | 1));
+  for (std::size_t i = end; i < n; ++i) REQUIRE(v[i] == (std::uint32_t(i) | 1));
+#ifdef MADV_DONTNEED
+  // Inside: zeros, except in the pages the range shares with kept values.
+  const auto page = [&](std::size_t i) { return reinterpret_cast<std::uintptr_t>(v.data() + i) / alpha::kDiscardPage; };
+  std::size_t kept = 0;
+  for (std::size_t i = begin; i < end; ++i)
+    if (v[i] != 0) {
+      ++kept;
+      REQUIRE((page(i) == page(begin - 1) || page(i) == page(end)));
+    }
+  REQUIRE(kept < end - begin);  // some pages did go back
 #endif
 }
