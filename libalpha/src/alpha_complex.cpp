@@ -129,36 +129,32 @@ void AlphaComplex::rank_critical() {
   vertex_attached_.resize(t.num_points());
   edge_attached_.resize(s.num_edges());
   triangle_attached_.resize(s.num_triangles());
-  {
-    ThreadFlags attached(edge_attached_, threads_);
-    in_parallel(threads_, s.num_triangles(), [&](unsigned k, std::size_t begin, std::size_t end) {
-      std::vector<bool>& mine = attached.of(k);
-      for (Index f = Index(begin); f < end; ++f) {
-        if (f + kAhead < s.num_triangles()) local.prefetch_all(s.triangle(f + kAhead));
-        const auto fv = s.triangle(f);
-        for (int i = 0; i < 3; ++i) {  // edge i is opposite vertex i
-          const Index e = s.triangle_edges(f)[i];
-          if (!mine[e])
-            mine[e] = kernels[k].sizes.attached(local(Simplex(fv[(i + 1) % 3], fv[(i + 2) % 3])), local[fv[i]]);
-        }
+  // Flags set by tests of items [0, n) on the threads: test(sizes, flags,
+  // item) with the thread's kernel and flags.
+  const auto mark = [&](std::vector<bool>& flags, std::size_t n, auto test) {
+    ThreadFlags marked(flags, threads_);
+    in_parallel(threads_, n, [&](unsigned k, std::size_t begin, std::size_t end) {
+      for (Index i = Index(begin); i < end; ++i) test(kernels[k].sizes, marked.of(k), i);
+    });
+    marked.merge();
+  };
+  mark(edge_attached_, s.num_triangles(), [&](SizeKernel& sizes, std::vector<bool>& attached, Index f) {
+    if (f + kAhead < s.num_triangles()) local.prefetch_all(s.triangle(f + kAhead));
+    const auto fv = s.triangle(f);
+    for (int k = 0; k < 3; ++k) {  // edge k is opposite vertex k
+      const Index e = s.triangle_edges(f)[k];
+      if (!attached[e])
+        attached[e] = sizes.attached(local(Simplex(fv[(k + 1) % 3], fv[(k + 2) % 3])), local[fv[k]]);
+    }
+  });
+  if (t.weighted())
+    mark(vertex_attached_, s.num_edges(), [&](SizeKernel& sizes, std::vector<bool>& attached, Index e) {
+      if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
+      for (int k = 0; k < 2; ++k) {
+        const Index v = s.edge(e)[k];
+        if (!attached[v]) attached[v] = sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - k]]);
       }
     });
-    attached.merge();
-  }
-  if (t.weighted()) {
-    ThreadFlags attached(vertex_attached_, threads_);
-    in_parallel(threads_, s.num_edges(), [&](unsigned k, std::size_t begin, std::size_t end) {
-      std::vector<bool>& mine = attached.of(k);
-      for (Index e = Index(begin); e < end; ++e) {
-        if (e + kAhead < s.num_edges()) local.prefetch_all(s.edge(e + kAhead));
-        for (int i = 0; i < 2; ++i) {
-          const Index v = s.edge(e)[i];
-          if (!mine[v]) mine[v] = kernels[k].sizes.attached(local(Simplex(v)), local[s.edge(e)[1 - i]]);
-        }
-      }
-    });
-    attached.merge();
-  }
 
   // The critical values are the sizes of the finite cells and of the
   // unattached faces (an attached face enters with a coface, and mu_low,

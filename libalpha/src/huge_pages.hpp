@@ -38,6 +38,17 @@ void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value = T()) {
   v.assign(n, value);
 }
 
+inline constexpr std::uintptr_t kDiscardPage = std::uintptr_t(2) << 20;
+
+// The huge pages wholly inside the addresses [first, last) go back.
+inline void discard_pages([[maybe_unused]] std::uintptr_t first, [[maybe_unused]] std::uintptr_t last) {
+#ifdef MADV_DONTNEED
+  first = (first + kDiscardPage - 1) & ~(kDiscardPage - 1);
+  last &= ~(kDiscardPage - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#endif
+}
+
 // For an array read once from the front: v[0, end) has been read for the
 // last time, and the pages from the one holding v[begin] up to v[end] that
 // hold nothing else of v go back to the system (Linux; a no-op elsewhere),
@@ -45,32 +56,19 @@ void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value = T()) {
 // are lost (they read as zeros if touched again). Called with the previous
 // call's end as begin, no page is left behind. In huge pages: a smaller
 // piece of one would split it, and each call flushes the TLB.
-inline constexpr std::uintptr_t kDiscardPage = std::uintptr_t(2) << 20;
 template <class T, class A>
-void discard_read([[maybe_unused]] std::vector<T, A>& v, [[maybe_unused]] std::size_t begin,
-                  [[maybe_unused]] std::size_t end) {
-#ifdef MADV_DONTNEED
-  constexpr std::uintptr_t kPage = kDiscardPage;
+void discard_read(std::vector<T, A>& v, std::size_t begin, std::size_t end) {
   const auto address = [&](std::size_t i) { return reinterpret_cast<std::uintptr_t>(v.data() + i); };
-  // Not below the array's first whole page: the allocator's own data may
-  // share the page before it.
-  const auto first = std::max(address(begin) & ~(kPage - 1), (address(0) + kPage - 1) & ~(kPage - 1));
-  const auto last = address(end) & ~(kPage - 1);
-  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
-#endif
+  // From the page holding v[begin], but not below the array's first whole
+  // page: the allocator's own data may share the page before it.
+  discard_pages(std::max(address(begin) & ~(kDiscardPage - 1), address(0)), address(end));
 }
 
 // v[begin, end) holds nothing that will be read: the huge pages wholly
 // inside it go back to the system (Linux; a no-op elsewhere).
 template <class T, class A>
-void discard_unused([[maybe_unused]] std::vector<T, A>& v, [[maybe_unused]] std::size_t begin,
-                    [[maybe_unused]] std::size_t end) {
-#ifdef MADV_DONTNEED
-  constexpr std::uintptr_t kPage = kDiscardPage;
-  const auto first = (reinterpret_cast<std::uintptr_t>(v.data() + begin) + kPage - 1) & ~(kPage - 1);
-  const auto last = reinterpret_cast<std::uintptr_t>(v.data() + end) & ~(kPage - 1);
-  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
-#endif
+void discard_unused(std::vector<T, A>& v, std::size_t begin, std::size_t end) {
+  discard_pages(reinterpret_cast<std::uintptr_t>(v.data() + begin), reinterpret_cast<std::uintptr_t>(v.data() + end));
 }
 
 // Frees v's storage (v = {} would keep it: that assigns an empty list).

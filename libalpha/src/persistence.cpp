@@ -233,14 +233,13 @@ void find_pairs(const Triangulation& t, const Simplices& s, const FiltrationRank
   // threads, dimensions 0 and 2 side by side (they share no array).
   std::vector<char> creates_cycle;
   std::vector<Index> killers;
-  const auto dimension_0 = [&] { creates_cycle = vertex_pairs(t, s, r, pairs); };
-  if (threads > 1) {
-    const std::jthread side(dimension_0);
+  {
+    const auto dimension_0 = [&] { creates_cycle = vertex_pairs(t, s, r, pairs); };
+    std::jthread side;
+    if (threads > 1) side = std::jthread(dimension_0);
+    else dimension_0();
     killers = complement_pairs(t, s, r, pairs);
-  } else {
-    dimension_0();
-    killers = complement_pairs(t, s, r, pairs);
-  }
+  }  // joins the side thread
   cycle_pairs(s, r, killers, creates_cycle, pairs);
   for (Index e = 0; e < s.num_edges(); ++e)
     if (creates_cycle[e] == 1) pairs.add(1, r.edge[e], kNever, e, kNone);
