@@ -15,3 +15,16 @@ bench_setup() {
   scratch=$(mktemp -d)
   trap 'rm -rf "$scratch"' EXIT
 }
+
+# write_random_points FILE N SEED: N uniform random points in the unit cube
+# (Python's random.Random(SEED)), as "x y z" lines.
+write_random_points() {
+  python3 - "$@" <<'PY'
+import random, sys
+path, n, seed = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+r = random.Random(seed)
+with open(path, "w") as f:
+    for _ in range(n):
+        f.write("%.17g %.17g %.17g\n" % (r.random(), r.random(), r.random()))
+PY
+}

@@ -19,13 +19,10 @@ set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 bench_setup "${1:-}"
+write_random_points "$scratch/random.xyz" 1000000 2
 python3 - "$scratch" <<'PY'
 import random, sys
 d = sys.argv[1]
-r = random.Random(2)
-with open(d + "/random.xyz", "w") as f:
-    for _ in range(1000000):
-        f.write("%.17g %.17g %.17g\n" % (r.random(), r.random(), r.random()))
 r = random.Random(5)
 side = 100.0  # unit density; weights (squared radii) in [0, 1)
 with open(d + "/weighted.xyz", "w") as f:
