@@ -47,7 +47,7 @@ echo "load average $(cut -d' ' -f1-3 /proc/loadavg); REPS=$reps, K=$k nearest po
 printf '%-22s %6s %8s  %-40s %8s %7s\n' model atoms cpu_s chains chains_s ratio
 grep '^AF-' "$scratch/all" | while read -r id path atoms; do
   grep -v '^AF-' "$scratch/all" | awk -v n="$atoms" '{ d = $3 - n; print (d < 0 ? -d : d), $0 }' | sort -g -k1,1 -k2,2 |
-    head -n "$k" | cut -d' ' -f2- >"$scratch/near"
+    awk -v k="$k" 'NR <= k' | cut -d' ' -f2- >"$scratch/near"  # reads to the end: no SIGPIPE for sort under pipefail
   : >"$scratch/model"
   while read -r cid cpath catoms; do : >"$scratch/$cid"; done <"$scratch/near"
   for ((r = 0; r < reps; ++r)); do
