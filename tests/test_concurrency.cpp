@@ -5,7 +5,7 @@
 // persistence pairs once; a search measuring its cavities on threads
 // gives bit-for-bit the sequential search's cavities; a triangulation
 // built on threads has the sequential one's cells, numbered the same way
-// for any thread count.
+// for any thread count, and so do its edges and triangles.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/simplices.hpp"
 #include "alpha/spatial_sort.hpp"
 #include "alpha/triangulation.hpp"
 #include "molecule/pocket_search.hpp"
@@ -242,6 +243,61 @@ TEST_CASE("Persistence of a triangulation built on threads equals the sequential
       return pairs;
     };
     CHECK(diagram(a) == diagram(b));
+  }
+}
+
+namespace {
+
+// Every table of a Simplices, as one list of numbers: edges, the
+// triangles of each edge (read from its stored cell), each triangle's
+// vertices, edges and cells, each cell's triangles and each vertex's edges.
+std::vector<alpha::Index> simplex_tables(const alpha::Triangulation& t, const alpha::Simplices& s) {
+  std::vector<alpha::Index> list{alpha::Index(s.num_edges()), alpha::Index(s.num_triangles()),
+                                 alpha::Index(s.num_hull_triangles())};
+  for (alpha::Index e = 0; e < s.num_edges(); ++e) {
+    list.insert(list.end(), s.edge(e).begin(), s.edge(e).end());
+    for (const alpha::Index f : s.edge_triangles(e)) list.push_back(f);
+  }
+  for (alpha::Index f = 0; f < s.num_triangles(); ++f) {
+    for (const alpha::Index v : s.triangle(f)) list.push_back(v);
+    list.insert(list.end(), s.triangle_edges(f).begin(), s.triangle_edges(f).end());
+    for (const alpha::Index c : s.triangle_cells(f)) list.push_back(c);
+  }
+  for (alpha::Index c = 0; c < t.num_cells(); ++c)
+    for (int i = 0; i < 4; ++i) list.push_back(s.cell_triangle(c, i));
+  for (alpha::Index v = 0; v < t.num_points(); ++v) {
+    list.push_back(alpha::Index(s.vertex_edges(v).size()));
+    list.insert(list.end(), s.vertex_edges(v).begin(), s.vertex_edges(v).end());
+  }
+  return list;
+}
+
+}  // namespace
+
+TEST_CASE("Edges and triangles numbered on threads are the sequential ones", "[concurrency][simplices]") {
+  using alpha::Vec3;
+  // Rings that cross from one thread's cells into another's. Random points;
+  // a grid (cospherical cubes); weighted points with hidden ones;
+  // duplicates; and five points, fewer cells than threads.
+  std::vector<Vec3> duplicated = testing::random_points(3000, 31);
+  for (int i = 0; i < 500; ++i) duplicated.push_back(duplicated[std::size_t(i) * 3]);
+  for (int kind = 0; kind < 5; ++kind) {
+    INFO("kind " << kind);
+    const std::vector<Vec3> points = kind == 0   ? testing::random_points(4000, 32)
+                                     : kind == 1 ? testing::grid_points(12)
+                                     : kind == 2 ? testing::random_points(4000, 33, 16.0)
+                                     : kind == 3 ? duplicated
+                                                 : testing::random_points(5, 34);
+    const std::vector<double> weights = kind == 2 ? testing::random_weights(4000, 35, 0.0, 1.0) : std::vector<double>{};
+    const alpha::Triangulation t(points, weights);
+    if (kind == 2) CHECK(t.num_hidden() > 0);
+    const alpha::Simplices one(t);
+    const auto tables = simplex_tables(t, one);
+    CHECK(one.num_edges() == alpha::count_simplices(t).edges);
+    for (unsigned threads : {2u, 3u, 4u, 64u}) {
+      INFO(threads << " threads");
+      CHECK(simplex_tables(t, alpha::Simplices(t, threads)) == tables);
+    }
   }
 }
 

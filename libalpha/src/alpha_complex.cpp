@@ -94,7 +94,7 @@ SizeKernel AlphaComplex::size_kernel() const {
 AlphaComplex::AlphaComplex(const Triangulation& t, unsigned threads)
     : t_(&t),
       threads_(t.num_vertices() < kThreadsFrom ? 1 : std::clamp(threads, 1u, kMaxThreads)),
-      simplices_(t) {
+      simplices_(t, threads_) {
   const Simplices& s = simplices_;
   ids_ = {Index(t.num_points()), Index(t.num_points() + s.num_edges()),
           Index(t.num_points() + s.num_edges() + s.num_triangles())};

@@ -2,9 +2,13 @@
 #include "alpha/simplices.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstdint>
 
 #include "alpha/error.hpp"
 #include "huge_pages.hpp"
+#include "parallel.hpp"
 #include "prefetch.hpp"
 
 namespace alpha {
@@ -29,29 +33,56 @@ SimplexCounts count_simplices(const Triangulation& t) {
   return {t.num_vertices() + triangles - cells - 1, triangles, hull};
 }
 
-Simplices::Simplices(const Triangulation& t) : t_(&t) {
-  const std::size_t np = t.num_points();
-  // Edges in order of the first cell holding them: walking the cells in
-  // storage order keeps memory access local. The first cell of an edge
-  // turns around it and records the new id in every cell of that ring.
+Simplices::Simplices(const Triangulation& t, unsigned threads) : t_(&t) {
+  if (t.num_cells() >= (std::size_t(1) << 30))
+    fail("too many cells for 32-bit triangle records", ErrorKind::LimitExceeded);
+  std::vector<std::array<Index, 6>> cell_edges;  // temporary
+  std::array<Index, 6> none;
+  none.fill(kNone);
+  assign_huge(cell_edges, t.num_cells(), none);
+  const EdgeIds ids = number_edges(cell_edges, std::max(threads, 1u));
+  number_triangles(cell_edges, ids, std::max(threads, 1u));
+  release(cell_edges);
+  index_vertex_edges();
+}
+
+// The facets' far sides and the rings start in the neighbours, which lie
+// anywhere (at 1e6 random points, more than half of the ring steps go
+// 65,536 cells or further in memory).
+void Simplices::prefetch_neighbours(Index c) const {
+  if (c + kAhead < t_->num_cells())
+    for (const Index n : t_->cell(c + Index(kAhead)).n) prefetch(&t_->cell(n));
+}
+
+// Edges in order of the first cell holding them (the smallest id around
+// them): walking the cells in storage order keeps memory access local. The
+// first cell of an edge turns around it and records the id in every cell
+// of that ring. On threads, each thread numbers the edges whose first cell
+// lies in its range of cells, the ids tagged with the thread; a ring that
+// reaches a cell before the range belongs to an earlier thread (the range's
+// own earlier cells would have numbered it already) and is left to it. Ids
+// are written and tested through atomic_ref: a thread may test a cell's
+// slot while the ring's owner writes it.
+Simplices::EdgeIds Simplices::number_edges(std::vector<std::array<Index, 6>>& cell_edges, unsigned threads) {
+  const Triangulation& t = *t_;
   // Counts from Euler's relation for the 3-sphere (the infinite vertex
   // included): V - E + F - C = 0 with F = 2C, so E = V + C, less the hull
   // vertices' edges to infinity; each infinite cell has 3 of the F facets
   // through infinity, each shared by two cells.
-  const std::size_t nc = t.num_cells(), infinite_cells = nc - t.num_finite_cells();
-  std::vector<std::array<Index, 6>> cell_edges;  // temporary
-  std::array<Index, 6> none;
-  none.fill(kNone);
-  assign_huge(cell_edges, nc, none);
-  reserve_huge(edges_, t.num_vertices() + 1 + nc);
-  reserve_huge(edge_cells_, t.num_vertices() + 1 + nc);
-  // The facets' far sides and the rings start in the neighbours, which lie
-  // anywhere (at 1e6 random points, more than half of the ring steps go
-  // 65,536 cells or further in memory).
-  const auto prefetch_neighbours = [&](Index c) {
-    if (c + kAhead < t.num_cells())
-      for (const Index n : t.cell(c + Index(kAhead)).n) prefetch(&t.cell(n));
+  const std::size_t max_edges = t.num_vertices() + 1 + t.num_cells();
+  reserve_huge(edges_, max_edges);
+  reserve_huge(edge_cells_, max_edges);
+  // Few enough threads that none can run out of ids below its tag.
+  while (threads > 1 && max_edges >= (std::uint64_t(1) << (32 - std::bit_width(threads - 1))) - 1) threads /= 2;
+  EdgeIds ids;
+  ids.shift = 32 - std::bit_width(threads - 1);
+  ids.first.assign(threads, 0);
+  struct alignas(64) Found {
+    std::vector<std::array<Index, 2>> edges;
+    std::vector<Index> cells;
   };
+  std::vector<Found> found(threads - 1);  // the first thread's go straight to edges_
+  for (Found& f : found) reserve_huge(f.edges, max_edges), reserve_huge(f.cells, max_edges);
   // A ring around an edge of c also reaches the neighbours' neighbours
   // (the whole ring when it has up to 5 cells), asked for once the
   // neighbours have arrived.
@@ -61,54 +92,114 @@ Simplices::Simplices(const Triangulation& t) : t_(&t) {
       for (const Index n : t.cell(c + Index(kAhead)).n)
         for (const Index m : t.cell(n).n) prefetch(&t.cell(m));
   };
-  for (Index c = 0; c < t.num_cells(); ++c) {
-    prefetch_rings(c);
-    for (int e = 0; e < 6; ++e) {
-      const Index a = t.cell(c).v[kEdge[e][0]], b = t.cell(c).v[kEdge[e][1]];
-      if (cell_edges[c][e] != kNone || a == kInfinite || b == kInfinite) continue;
-      const Index id = static_cast<Index>(edges_.size());
-      edges_.push_back({std::min(a, b), std::max(a, b)});
-      edge_cells_.push_back(c);
-      // Cells around ab: cross the facet opposite one of the two other
-      // vertices; in the next cell, cross the facet opposite the vertex
-      // shared with the previous one.
-      Index cur = c;
-      Index across = t.cell(c).v[kEdge[5 - e][0]];
-      do {
-        const auto& cv = t.cell(cur).v;
-        const int ia = position(cv, a), ib = position(cv, b);
-        cell_edges[cur][kLocalEdge[ia][ib]] = id;
-        cur = ring_step(t, cur, ia, ib, position(cv, across), across);
-      } while (cur != c);
+  const auto read = [](Index& slot) { return std::atomic_ref(slot).load(std::memory_order_relaxed); };
+  const auto write = [](Index& slot, Index id) { std::atomic_ref(slot).store(id, std::memory_order_relaxed); };
+  in_parallel(threads, t.num_cells(), [&](unsigned k, std::size_t begin, std::size_t end) {
+    auto& edges = k == 0 ? edges_ : found[k - 1].edges;
+    auto& first_cells = k == 0 ? edge_cells_ : found[k - 1].cells;
+    const Index tag = Index(std::uint64_t(k) << ids.shift);
+    std::vector<Index*> ring;  // the slots of a ring, written once it is known to be the thread's
+    // The first range's rings all start at their first cell: written as walked.
+    const bool first_range = begin == 0;
+    for (Index c = Index(begin); c < end; ++c) {
+      prefetch_rings(c);
+      for (int e = 0; e < 6; ++e) {
+        const Index a = t.cell(c).v[kEdge[e][0]], b = t.cell(c).v[kEdge[e][1]];
+        if (a == kInfinite || b == kInfinite || read(cell_edges[c][e]) != kNone) continue;
+        // Cells around ab: cross the facet opposite one of the two other
+        // vertices; in the next cell, cross the facet opposite the vertex
+        // shared with the previous one.
+        const Index id = tag | Index(edges.size());
+        ring.clear();
+        bool earlier = false;
+        Index cur = c;
+        Index across = t.cell(c).v[kEdge[5 - e][0]];
+        do {
+          const auto& cv = t.cell(cur).v;
+          const int ia = position(cv, a), ib = position(cv, b);
+          Index& slot = cell_edges[cur][kLocalEdge[ia][ib]];
+          if (first_range) write(slot, id);
+          else ring.push_back(&slot), earlier |= cur < c;
+          cur = ring_step(t, cur, ia, ib, position(cv, across), across);
+        } while (cur != c);
+        if (earlier) continue;
+        for (Index* slot : ring) write(*slot, id);
+        edges.push_back({std::min(a, b), std::max(a, b)});
+        first_cells.push_back(c);
+      }
     }
+  });
+  for (unsigned k = 1; k < threads; ++k) {
+    ids.first[k] = Index(edges_.size());
+    edges_.insert(edges_.end(), found[k - 1].edges.begin(), found[k - 1].edges.end());
+    edge_cells_.insert(edge_cells_.end(), found[k - 1].cells.begin(), found[k - 1].cells.end());
+    release(found[k - 1].edges), release(found[k - 1].cells);
   }
-  // Triangles: each finite facet once, from the cell with the smaller id.
-  // Facet i of a cell misses vertex i, so its edges are the local edges
-  // avoiding i, listed opposite to the facet's vertices f[0], f[1], f[2].
-  if (t.num_cells() >= (std::size_t(1) << 30)) fail("too many cells for 32-bit triangle records", ErrorKind::LimitExceeded);
-  assign_huge(cell_triangles_, 4 * nc, kNone);
-  reserve_huge(triangle_facets_, 2 * nc - 3 * infinite_cells / 2);
-  reserve_huge(triangle_edges_, 2 * nc - 3 * infinite_cells / 2);
+  return ids;
+}
+
+// Triangles: each finite facet once, from the cell with the smaller id, in
+// cell order. Facet i of a cell misses vertex i, so its edges are the local
+// edges avoiding i, listed opposite to the facet's vertices f[0], f[1],
+// f[2]. On threads, each thread counts the facets of its range of cells,
+// then writes them from the ids that follow the earlier ranges'.
+void Simplices::number_triangles(const std::vector<std::array<Index, 6>>& cell_edges, const EdgeIds& ids,
+                                 unsigned threads) {
+  const Triangulation& t = *t_;
+  const std::size_t nc = t.num_cells();
+  // Written once each, by the threads: no fill first.
+  const std::size_t num_triangles = count_simplices(t).triangles;
+  reserve_huge(cell_triangles_, 4 * nc), cell_triangles_.resize(4 * nc);
+  reserve_huge(triangle_facets_, num_triangles), triangle_facets_.resize(num_triangles);
+  reserve_huge(triangle_edges_, num_triangles), triangle_edges_.resize(num_triangles);
+  // Facet i of cell c, holding infinity at `inf` (or -1), is a triangle c stores.
+  const auto stores = [&](Index c, int i, int inf) { return t.cell(c).n[i] >= c && (inf < 0 || inf == i); };
+  struct alignas(64) Range {
+    Index first = 0;  // its first triangle's id
+    std::size_t hull = 0;
+  };
+  std::vector<Range> ranges(threads);
+  if (threads > 1)
+    in_parallel(threads, nc, [&](unsigned k, std::size_t begin, std::size_t end) {
+      if (k + 1 == threads) return;
+      Index n = 0;
+      for (Index c = Index(begin); c < end; ++c) {
+        const int inf = t.infinite_position(c);
+        for (int i = 0; i < 4; ++i) n += stores(c, i, inf);
+      }
+      ranges[k + 1].first = n;
+    });
+  for (unsigned k = 1; k < threads; ++k) ranges[k].first += ranges[k - 1].first;
   auto local_edge = [](int a, int b) { return static_cast<std::size_t>(kLocalEdge[a][b]); };
-  for (Index c = 0; c < t.num_cells(); ++c) {
-    prefetch_neighbours(c);
-    const Cell& cell = t.cell(c);
-    const int inf = t.infinite_position(c);
-    for (int i = 0; i < 4; ++i) {
-      const Index n = cell.n[i];
-      if (n < c || (inf >= 0 && inf != i)) continue;  // not ours, or not finite
-      const auto& f = kFacet[i];
-      const Index id = static_cast<Index>(triangle_facets_.size());
-      const auto& ce = cell_edges[c];
-      triangle_facets_.push_back(c << 2 | Index(i));
-      triangle_edges_.push_back({ce[local_edge(f[1], f[2])], ce[local_edge(f[0], f[2])], ce[local_edge(f[0], f[1])]});
-      cell_triangles_[4 * std::size_t(c) + i] = id;
-      cell_triangles_[4 * std::size_t(n) + t.mirror_index(c, i)] = id;
-      num_hull_triangles_ += inf >= 0 || t.is_infinite(n);
+  in_parallel(threads, nc, [&](unsigned k, std::size_t begin, std::size_t end) {
+    Index id = ranges[k].first;
+    std::size_t hull = 0;
+    for (Index c = Index(begin); c < end; ++c) {
+      prefetch_neighbours(c);
+      const int inf = t.infinite_position(c);
+      for (int i = 0; i < 4; ++i) {
+        if (inf >= 0 && inf != i) cell_triangles_[4 * std::size_t(c) + i] = kNone;  // through infinity
+        if (!stores(c, i, inf)) continue;
+        const Index n = t.cell(c).n[i];
+        const auto& f = kFacet[i];
+        const auto& ce = cell_edges[c];
+        triangle_facets_[id] = c << 2 | Index(i);
+        triangle_edges_[id] = {ids.global(ce[local_edge(f[1], f[2])]), ids.global(ce[local_edge(f[0], f[2])]),
+                               ids.global(ce[local_edge(f[0], f[1])])};
+        cell_triangles_[4 * std::size_t(c) + i] = id;
+        cell_triangles_[4 * std::size_t(n) + t.mirror_index(c, i)] = id;
+        hull += inf >= 0 || t.is_infinite(n);
+        ++id;
+      }
     }
-  }
-  release(cell_edges);
-  // Each vertex's edges, as compressed rows (32-bit offsets).
+    ranges[k].hull = hull;
+  });
+  for (const Range& r : ranges) num_hull_triangles_ += r.hull;
+}
+
+// Each vertex's edges, as compressed rows (32-bit offsets).
+void Simplices::index_vertex_edges() {
+  const std::size_t np = t_->num_points();
   if (2 * edges_.size() >= kNone) fail("too many edges for 32-bit incidence offsets", ErrorKind::LimitExceeded);
   assign_huge(vertex_edge_start_, np + 1, Index(0));
   for (const auto& e : edges_) ++vertex_edge_start_[e[0] + 1], ++vertex_edge_start_[e[1] + 1];

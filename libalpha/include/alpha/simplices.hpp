@@ -13,11 +13,13 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <span>
 #include <vector>
 
 #include "alpha/triangulation.hpp"
+#include "alpha/uninitialized_allocator.hpp"
 
 namespace alpha {
 
@@ -25,7 +27,8 @@ class Simplices {
 public:
   class EdgeTriangles;
 
-  explicit Simplices(const Triangulation& t);
+  // The ids are the same for any number of threads.
+  explicit Simplices(const Triangulation& t, unsigned threads = 1);
 
   std::size_t num_edges() const { return edges_.size(); }
   const std::array<Index, 2>& edge(Index e) const { return edges_[e]; }  // v0 < v1
@@ -69,11 +72,27 @@ private:
   const Triangulation* t_;
   std::vector<std::array<Index, 2>> edges_;
   std::vector<Index> edge_cells_;       // one cell holding each edge
-  std::vector<Index> triangle_facets_;  // cell << 2 | facet
-  std::vector<std::array<Index, 3>> triangle_edges_;
-  std::vector<Index> cell_triangles_;
+  // Written by threads, each slot once: not zeroed first.
+  std::vector<Index, UninitializedAllocator<Index>> triangle_facets_;  // cell << 2 | facet
+  std::vector<std::array<Index, 3>, UninitializedAllocator<std::array<Index, 3>>> triangle_edges_;
+  std::vector<Index, UninitializedAllocator<Index>> cell_triangles_;
   std::vector<Index> vertex_edge_start_, vertex_edges_;  // compressed rows
   std::size_t num_hull_triangles_ = 0;
+
+  // Edge ids numbered on threads: thread k's edge j is k << shift | j,
+  // global id first[k] + j once every thread's count is known.
+  struct EdgeIds {
+    int shift = 32;
+    std::vector<Index> first;
+    Index global(Index id) const {
+      const auto k = std::size_t(std::uint64_t(id) >> shift);
+      return first[k] + Index(id & ((std::uint64_t(1) << shift) - 1));
+    }
+  };
+  EdgeIds number_edges(std::vector<std::array<Index, 6>>& cell_edges, unsigned threads);
+  void number_triangles(const std::vector<std::array<Index, 6>>& cell_edges, const EdgeIds& ids, unsigned threads);
+  void index_vertex_edges();
+  void prefetch_neighbours(Index c) const;
 
   // One step around edge ab of `cell` (a, b at local indices ia, ib) across
   // its facet k: returns the next cell, sets `across` to the remaining
