@@ -40,8 +40,9 @@ Simplices::Simplices(const Triangulation& t, unsigned threads) : t_(&t) {
   std::array<Index, 6> none;
   none.fill(kNone);
   assign_huge(cell_edges, t.num_cells(), none);
-  const EdgeIds ids = number_edges(cell_edges, std::max(threads, 1u));
-  number_triangles(cell_edges, ids, std::max(threads, 1u));
+  threads = std::max(threads, 1u);
+  const EdgeIds ids = number_edges(cell_edges, threads);
+  number_triangles(cell_edges, ids, threads);
   release(cell_edges);
   index_vertex_edges();
 }
