@@ -706,3 +706,23 @@ TEST_CASE("union of balls: cells' parts sum to the union on degenerate sets", "[
     CHECK(std::fabs(part - whole * p) < 4.5 * whole * std::sqrt(p * (1 - p) / samples) + 1e-12);
   }
 }
+
+TEST_CASE("union of balls: balls far from unit size measure as at unit size", "[union][degenerate]") {
+  // Radii near 1e-99: the terms' fourth and sixth powers of lengths leave
+  // the doubles' range unless the sums change unit (they lost 1 % of the
+  // volume). The same balls scaled by 2^-330, an exact change of unit.
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> coordinate(0, 3), radius(0.5, 1.5);
+  testing::BallSet unit_size;
+  for (int i = 0; i < 30; ++i) {
+    unit_size.centers.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
+    unit_size.radii.push_back(radius(rng));
+  }
+  testing::BallSet tiny = unit_size;
+  for (auto& c : tiny.centers) c = std::ldexp(1.0, -330) * c;
+  for (double& r : tiny.radii) r = std::ldexp(r, -330);
+  const Union one(unit_size), small(tiny);
+  REQUIRE(one.u->volume() > 0);
+  CHECK(std::ldexp(small.u->volume(), 990) == Approx(one.u->volume()).epsilon(1e-12));
+  CHECK(std::ldexp(small.u->area(), 660) == Approx(one.u->area()).epsilon(1e-12));
+}

@@ -251,7 +251,16 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     radius_[i] = std::sqrt(w);
     max_radius_ = std::max(max_radius_, radius_[i]);
   }
-  const std::vector<double>& radius = radius_;
+  // Area and volume are summed from terms in the fourth and sixth powers
+  // of lengths, which leave the doubles' range for balls far from unit
+  // size (radii of 1e-99 lost 1 % of the volume): the sums take lengths
+  // scaled by a power of two that brings the largest radius near 1, an
+  // exact change of unit undone at the end, and 1 for radii in [2^-64,
+  // 2^64] (molecules, any practical unit).
+  const int exponent = max_radius_ > 0 ? std::ilogb(max_radius_) : 0;
+  const double unit = std::abs(exponent) > 64 ? std::ldexp(1.0, -exponent) : 1.0;
+  std::vector<double> radius(n), weight(n);
+  for (Index i = 0; i < n; ++i) radius[i] = radius_[i] * unit, weight[i] = t.weight(i) * unit * unit;
   // For cell_cover: the balls of K, and each one's neighbours in K.
   balls_ = PointGrid(2 * max_radius_);
   for (Index i = 0; i < n; ++i)
@@ -272,7 +281,7 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
     }
   // The balls of a simplex relative to its first vertex.
   auto balls = [&]<std::size_t N>(const std::array<Index, N>& v, std::array<Ball, N>& b) {
-    for (std::size_t k = 0; k < N; ++k) b[k] = {t.point(v[k]) - t.point(v[0]), t.weight(v[k]), radius[v[k]]};
+    for (std::size_t k = 0; k < N; ++k) b[k] = {unit * (t.point(v[k]) - t.point(v[0])), weight[v[k]], radius[v[k]]};
   };
 
   // The edge joining u and w among a few candidate edge ids.
@@ -287,7 +296,7 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
   std::vector<Sum> area(n), facet(s.num_edges());
 
   for (Index v = 0; v < n; ++v)
-    if (in_dual_complex_vertex(v)) area[v].add(4 * kPi * t.weight(v));
+    if (in_dual_complex_vertex(v)) area[v].add(4 * kPi * weight[v]);
   // Edges of K whose balls barely touch from outside (their circle's radius
   // a is below 10^-5.5 times the smaller radius, and each sphere's cap in
   // the other ball is at most a hemisphere; balls of radius 0) are left out
@@ -352,21 +361,23 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
   constexpr double kNoise = 1e-11;
   auto denoised = [&](double x, double whole) { return std::fabs(x) <= kNoise * whole ? 0.0 : x; };
   for (Index i = 0; i < n; ++i) {
-    ball_area_[i] = denoised(area[i].value(), 4 * kPi * t.weight(i));
+    ball_area_[i] = denoised(area[i].value(), 4 * kPi * weight[i]);
     volume[i].add(radius[i] * ball_area_[i]);
   }
   for (Index e = 0; e < s.num_edges(); ++e) {
     const double f = facet[e].value();
     if (f == 0) continue;
     const auto& v = s.edge(e);
-    const Ball b0{{}, t.weight(v[0]), radius[v[0]]}, b1{{}, t.weight(v[1]), radius[v[1]]};
-    const double d = norm(t.point(v[1]) - t.point(v[0]));
+    const Ball b0{{}, weight[v[0]], radius[v[0]]}, b1{{}, weight[v[1]], radius[v[1]]};
+    const double d = norm(unit * (t.point(v[1]) - t.point(v[0])));
     volume[v[0]].add(radical_offset(b0, b1, d) * f);
     volume[v[1]].add(radical_offset(b1, b0, d) * f);
   }
   Sum total_area, total_volume;
   for (Index i = 0; i < n; ++i) {
-    ball_volume_[i] = denoised(volume[i].value() / 3, 4 * kPi / 3 * t.weight(i) * radius[i]);
+    // Back to the input's unit (exact: powers of two, one at a time).
+    ball_volume_[i] = denoised(volume[i].value() / 3, 4 * kPi / 3 * weight[i] * radius[i]) / unit / unit / unit;
+    ball_area_[i] = ball_area_[i] / unit / unit;
     total_area.add(ball_area_[i]);
     total_volume.add(ball_volume_[i]);
   }
