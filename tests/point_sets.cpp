@@ -39,6 +39,16 @@ std::vector<double> random_weights(std::size_t n, std::uint64_t seed, double lo,
   return w;
 }
 
+std::vector<alpha::Vec3> jitter(std::vector<alpha::Vec3> points, double step, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g;
+  for (alpha::Vec3& q : points) {
+    const alpha::Vec3 d{g(rng), g(rng), g(rng)};
+    q = q + (step / alpha::norm(d)) * d;
+  }
+  return points;
+}
+
 std::vector<alpha::Vec3> ring_points(int n, double R, double h, double phase) {
   constexpr double kPi = 3.14159265358979323846;
   std::vector<alpha::Vec3> pts;

@@ -13,6 +13,8 @@ std::vector<alpha::Vec3> random_points(std::size_t n, std::uint64_t seed, double
 std::vector<alpha::Vec3> grid_points(int n, double spacing = 1.0);
 // Points exactly on a sphere: integer solutions of x^2+y^2+z^2 = r2.
 std::vector<alpha::Vec3> sphere_points(int r2);
+// Each point moved by `step` in a random direction.
+std::vector<alpha::Vec3> jitter(std::vector<alpha::Vec3> points, double step, std::uint64_t seed);
 // Random weights in [lo, hi).
 std::vector<double> random_weights(std::size_t n, std::uint64_t seed, double lo, double hi);
 

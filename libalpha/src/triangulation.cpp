@@ -15,6 +15,7 @@
 
 #include "alpha/error.hpp"
 #include "alpha/spatial_sort.hpp"
+#include "triangulation_input.hpp"
 #include "huge_pages.hpp"
 #include "parallel.hpp"
 
@@ -26,6 +27,8 @@ namespace {
 constexpr double kMaxCoordinate = 1e15;
 constexpr double kMaxWeight = 1e30;
 constexpr double kMinExtent = 1e-100;
+
+}  // namespace
 
 void check_input(const std::vector<Vec3>& points, const std::vector<double>& weights) {
   if (!weights.empty() && weights.size() != points.size())
@@ -53,6 +56,8 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
   if (extent > 0 && extent < kMinExtent)
     fail("the points span only " + std::to_string(extent) + " (below 1e-100): their sizes would underflow");
 }
+
+namespace {
 
 // The dimension of the affine hull of the points `order` lists (-1 if none,
 // 0 to 3), and in `first` the points that span it, the first found in
@@ -228,6 +233,23 @@ public:
     if (parallel) insert_parallel(threads);
     else insert_range(0, o_.points.size(), 0);
     finish(parallel ? threads : 1);
+  }
+
+  // Inserts `order` (input ids) into the cells t_ already has, whose
+  // unused ids are `free_cells`; vertex ids are input ids throughout.
+  void update(std::span<const Index> order, std::vector<Index> free_cells, Index hint) {
+    const std::size_t n = t_.points_.size();
+    o_.input.resize(n);
+    std::iota(o_.input.begin(), o_.input.end(), Index(0));
+    o_.points = t_.points_;
+    o_.weights = t_.weights_;
+    in_doubles_ = Kernel::exact_in_doubles(o_.points, o_.weights);
+    kernel_ = order_kernel();
+    cell_mark_.assign(cells_.size(), 0);
+    free_cells_ = std::move(free_cells);
+    for (Index p : order) hint = insert<false>(p, hint);
+    t_.num_vertices_ = t_.num_hidden_ = t_.num_finite_cells_ = 0;
+    finish(1);
   }
 
 private:
@@ -885,6 +907,11 @@ Triangulation::Triangulation(std::vector<Vec3> points, std::vector<double> weigh
   check_input(points_, weights_);
   InsertionOrder order;
   Builder(*this, order).run(std::clamp(threads, 1u, 254u));  // a builder's lock value is a byte
+}
+
+void Triangulation::insert_into(std::span<const Index> order, std::vector<Index> free_cells, Index hint) {
+  InsertionOrder identity;
+  Builder(*this, identity).update(order, std::move(free_cells), hint);
 }
 
 std::size_t Triangulation::memory_bytes() const {

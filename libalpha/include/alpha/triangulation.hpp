@@ -45,6 +45,13 @@ struct Cell {
 // (on a line), 2 (on a plane) or 3, when they have a triangulation. Exact.
 int affine_dimension(const std::vector<Vec3>& points);
 
+// What a dynamic update did.
+struct UpdateReport {
+  bool rebuilt = false;         // built afresh (duplicates involved, or the repair could not be local)
+  std::size_t relocated = 0;    // vertices taken out and inserted again at their new place
+  std::size_t reinserted = 0;   // points inserted, the relocated ones included (hidden ones rechecked too)
+};
+
 class Triangulation {
 public:
   // Throws alpha::Error for unusable input: non-finite or out-of-range
@@ -105,8 +112,25 @@ public:
   // Heap bytes held by this object.
   std::size_t memory_bytes() const;
 
+  // Dynamic update (dynamic_update.cpp): each call leaves the regular
+  // triangulation of the points as they then are, the same cells as a fresh
+  // build of points() and weights() (numbered differently), repaired in
+  // place where the points changed; see docs/dynamic_update.md.
+  //
+  // Point ids[k] moves to to[k] (with weight weights[k]: given exactly when
+  // the triangulation is weighted). Throws alpha::Error as the constructor
+  // does (bad values, coplanar result), leaving the triangulation as it was.
+  UpdateReport move_points(std::span<const Index> ids, std::span<const Vec3> to, std::span<const double> weights = {});
+  // Every point moves: to[i] is point i's new position.
+  UpdateReport move_points(std::span<const Vec3> to, std::span<const double> weights = {});
+  // New points get the ids num_points(), num_points() + 1, ...
+  UpdateReport insert_points(std::span<const Vec3> points, std::span<const double> weights = {});
+  // The points ids leave; the others keep their order, ids closing the gaps.
+  UpdateReport remove_points(std::span<const Index> ids);
+
 private:
   class Builder;
+  class Updater;
   std::vector<Vec3> points_;
   std::vector<double> weights_;
   std::vector<PointStatus> status_;
@@ -116,6 +140,11 @@ private:
   std::vector<Index> vertex_cell_;
   std::size_t num_vertices_ = 0, num_duplicates_ = 0, num_hidden_ = 0, num_finite_cells_ = 0;
   PredicateStats stats_;
+
+  // Inserts points (each with status vertex, its coordinates in points_)
+  // into the cells, whose unused ids are `free_cells`, walking from the
+  // live cell `hint`; then compacts the cells and redoes the counts.
+  void insert_into(std::span<const Index> order, std::vector<Index> free_cells, Index hint);
 
   int index_of_neighbor(Index c, Index n) const {
     const auto& cn = cell(c).n;
