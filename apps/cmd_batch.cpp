@@ -6,7 +6,7 @@
 // Many structures, one per worker thread: each goes through the same
 // pipeline as `pockets` (molecule::analyse), writes the chosen outputs to
 // OUTDIR/<id>/ and one record to OUTDIR/records.jsonl; the run's tables
-// (molecule/batch_tables.hpp) are written from the records at the end.
+// (batch/batch_tables.hpp) are written from the records at the end.
 // A re-run skips the structures whose record matches (same path, content
 // checksum, parameters and version). SIGINT/SIGTERM: no new structure is
 // started, the ones in flight finish, the tables are written; a second
@@ -35,12 +35,13 @@
 #include "common.hpp"
 #include "interrupt.hpp"
 #include "molecule/analysis.hpp"
-#include "molecule/batch_inputs.hpp"
-#include "molecule/batch_record.hpp"
-#include "molecule/batch_tables.hpp"
-#include "molecule/checksum.hpp"
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
+#include "batch/batch_inputs.hpp"
+#include "batch/batch_record.hpp"
+#include "batch/batch_tables.hpp"
+#include "util/checksum.hpp"
+#include "outputs/pocket_outputs.hpp"
+#include "outputs/pocket_report.hpp"
+#include "outputs/tables.hpp"
 #include "progress.hpp"
 
 namespace alphapocket {
@@ -48,7 +49,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Exit codes (README, "Batch screening").
+// Exit codes (docs/cli.md, `alphapocket batch`).
 constexpr int kSomeFailed = 3;
 constexpr int kNoneSucceeded = 4;
 
@@ -281,7 +282,7 @@ Subcommand add_batch_command(CLI::App& app) {
       "INPUT: structure files, directories (searched recursively for .pdb .ent .cif .mmcif, optionally .gz), or - "
       "(paths on standard input). OUTDIR gets structures.csv, sites.csv, tunnels.csv, failures.tsv, "
       "alphapocket.sqlite, records.jsonl and <id>/ per structure. Exit code 0: all succeeded, 3: some failed or "
-      "were skipped, 4: none succeeded, 128+N: stopped by signal N. See README.md, \"Batch screening\".");
+      "were skipped, 4: none succeeded, 128+N: stopped by signal N. See docs/cli.md, \"alphapocket batch\".");
   sub->add_option("INPUT", opt->inputs, "Structure files, directories, or - for paths on standard input");
   sub->add_option("--list", opt->lists,
                   "File listing one path per line (# comments; a P2Rank .ds dataset: first column, relative to "

@@ -17,7 +17,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "molecule/batch_tables.hpp"
+#include "batch/batch_tables.hpp"
 
 namespace alphapocket {
 namespace {

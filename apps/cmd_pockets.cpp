@@ -1,22 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
-// alphapocket pockets FILE [-o OUTDIR] [--probe R] [--min-volume V]
-//                          [--mesh ply|obj|off|stl] [--outputs LIST] [--json] [-j N]
+// alphapocket pockets FILE [-o OUTDIR] [options]   (every option: docs/cli.md)
 //
-// The product command: reads a structure file, builds the weighted alpha
-// complex of its atoms (ProtOr radius + probe), finds pockets, voids and
-// tunnels (molecule::find_cavities) and writes OUTDIR (default
-// <name>_pockets in the current directory; --outputs chooses):
-//   report.json   everything, schema in README.md
-//   pockets.csv   one row per pocket
-//   sites.csv     one row per binding site (pockets and voids)
-//   pockets.pml   PyMOL script        pockets.pdb  centres as pseudo-atoms
-//   meshes/       one mesh per pocket and void, and the molecule's surface
-//                 (only when asked: --outputs all, or --mesh FMT)
-// then prints a one-screen summary of the best binding sites (pockets and
-// large voids; or, with --json, the report) on stdout.
+// The product command: one structure through molecule::analyse (read,
+// weighted alpha complex of the atoms, cavities, ranked sites, tunnels;
+// docs/architecture.md), then OUTDIR (default <id>_pockets in the current
+// directory) written with the files --outputs chooses (default
+// report,csv,pml,pdb,tunnels: report.json, pockets.csv, sites.csv,
+// structure.cif, pockets.pml, pockets.cxc, pockets.pdb, tunnels.csv,
+// tunnel_profiles.csv, tunnels.pdb; meshes/ only with --outputs all, --mesh
+// or --mesh-resolution; docs/outputs.md), then a one-screen summary of the
+// best sites and where each ligand of the file sits (or, with --json, the
+// report) on stdout.
 //
 // OUTDIR describes one run, whole: it is written as a hidden sibling and
-// swapped in with one rename (molecule/pocket_outputs.hpp), and a bad OUTDIR
+// swapped in with one rename (outputs/pocket_outputs.hpp), and a bad OUTDIR
 // fails at once, before the work. SIGINT/SIGTERM end the run at once,
 // leaving OUTDIR as it was (or complete) and no temporary behind.
 #include <algorithm>
@@ -36,15 +33,16 @@
 #include "common.hpp"
 #include "interrupt.hpp"
 #include "molecule/analysis.hpp"
-#include "molecule/batch_inputs.hpp"
-#include "molecule/atomic_file.hpp"
-#include "molecule/buried_surface.hpp"
+#include "util/atomic_file.hpp"
+#include "ranking/buried_surface.hpp"
 #include "molecule/cavities.hpp"
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
+#include "outputs/pocket_outputs.hpp"
+#include "outputs/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
+#include "molecule/residues.hpp"
 #include "molecule/site_features.hpp"
 #include "molecule/structure.hpp"
+#include "structure/structure_id.hpp"
 
 namespace alphapocket {
 namespace {
@@ -59,7 +57,7 @@ struct PocketsOptions {
   std::string outputs = "report,csv,pml,pdb,tunnels";
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
-  std::string surface_points;  // --surface-points FILE: molecule/buried_surface.hpp's points as CSV
+  std::string surface_points;  // --surface-points FILE: ranking/buried_surface.hpp's points as CSV
 };
 
 // Sites shown in the summary, and its width in columns.
@@ -279,7 +277,7 @@ Subcommand add_pockets_command(CLI::App& app) {
       "Waters, hydrogens and hetero groups (ligands, ions) are left out unless kept with --keep-*; atoms get "
       "ProtOr radii. OUTDIR gets report.json, pockets.csv, sites.csv, pockets.pml (PyMOL), pockets.cxc (ChimeraX), "
       "structure.cif, pockets.pdb, tunnels.csv, tunnel_profiles.csv, tunnels.pdb, and meshes/ when asked for "
-      "(--mesh FMT or --outputs all); see README.md for their contents. -v logs every site, -vv with its lining residues.");
+      "(--mesh FMT or --outputs all); see docs/outputs.md for their contents. -v logs every site, -vv with its lining residues.");
   add_input_options(*sub, opt->input);
   // Only structure files: atoms need radii and residues.
   sub->remove_option(sub->get_option("--weighted"));

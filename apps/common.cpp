@@ -136,7 +136,7 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
           ->each([&selection](const std::string& code) { selection.keep_hetero |= code == "all"; })
           ->group(group),
       sub.add_flag("--keep-cofactors", selection.keep_cofactors,
-                   "Keep common metal ions and cofactors (ZN, MG, CA, FE, HEM, FAD, NAD, SF4, ...: README) as part "
+                   "Keep common metal ions and cofactors (ZN, MG, CA, FE, HEM, FAD, NAD, SF4, ...: docs/cli.md) as part "
                    "of the protein; other hetero groups are still dropped")
           ->group(group),
       sub.add_option("--min-plddt", selection.min_plddt,

@@ -14,7 +14,7 @@
 // swapped in whole), `batch` at the second.
 #pragma once
 
-#include "molecule/temporary_paths.hpp"
+#include "util/temporary_paths.hpp"
 
 namespace alphapocket {
 

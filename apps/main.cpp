@@ -139,7 +139,7 @@ int run(int argc, char** argv) {
   return 2;  // unreachable: CLI11 requires one subcommand
 }
 
-// The exit code of an error by its kind (README, "Usage").
+// The exit code of an error by its kind (docs/cli.md, "Usage").
 int exit_code(alpha::ErrorKind kind) {
   switch (kind) {
     case alpha::ErrorKind::BadInput: return 1;

@@ -2,7 +2,7 @@
 // The whole alpha complex family (triangulation, intervals, exactly sorted
 // spectrum, persistence) of alpha::AlphaComplex against CGAL's Alpha_shape_3
 // and GUDHI's Alpha_complex + persistent cohomology, and against CGAL's
-// triangulation alone (issue 23's yardstick), on the same point sets, in one
+// triangulation alone (the targets' yardstick), on the same point sets, in one
 // run; prints a table. See README.md.
 //
 // Usage: bench_alpha_complex [--large]   (--large: the peers on 1e6 points too)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Reading hostile structure files (issue 19, item 5): time and peak memory of
+# Reading hostile structure files: time and peak memory of
 #   - one residue of 40,000 atoms in two alternate locations, whose atom
 #     names have no partner in the other conformer (the worst case of the
 #     altloc selection), against the same atoms without altlocs: the ratio

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The persistence targets of issue 23 in one run with the peer: on N uniform
+# The persistence targets (bench/README.md) in one run with the peer: on N uniform
 # random points (default 1e6, seed 2), CGAL's sequential Delaunay
 # triangulation (bench/cgal_delaunay: the construction alone) against
 # `alphapocket persistence -v` at -j 1 and at -j 2, each in a fresh process,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Issue 23's per-structure ratio: the CPU time of `alphapocket pockets`
+# The per-structure cost target: the CPU time of `alphapocket pockets`
 # with its default outputs against fpocket 4.0's on the same chain, one
 # process each, alternating, in the same run; the median of the
 # per-structure ratios.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Issue 23's predicted-model target (a predicted model costs no more than
+# The predicted-model target (a predicted model costs no more than
 # 1.5x a crystal chain of the same atom count): the CPU time of
 # `alphapocket pockets` with its default outputs on each AlphaFold model of
 # ../shared/data/formats against the K crystal chains of pockets-train

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The triangulation on threads (issue 23): `alphapocket delaunay -j 1`
+# The triangulation on threads: `alphapocket delaunay -j 1`
 # against `-j 2` on 1e6 uniform random points and on 1e6 weighted ones
 # (the distributions of bench_triangulation), each in a fresh process, runs
 # alternating, REPS each (default 3). Prints the "triangulation: S s" wall

@@ -13,15 +13,10 @@ install(TARGETS alphapocket RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY libalpha/include/alpha DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_BINARY_DIR}/generated/alphapocket/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/alphapocket)
-# The molecule headers of the public API; the others (report JSON, batch
-# tables, viewer scripts) are the CLI's and stay in the tree.
-set(public_molecule_headers
-    analysis atom_balls cavities ligandability_model mesh_export output_selection pocket_meshes pocket_search radii
-    radius_file
-    site_features structure surface tunnel_paths tunnel_start)
-list(TRANSFORM public_molecule_headers PREPEND ${PROJECT_SOURCE_DIR}/molecule/include/molecule/)
-list(TRANSFORM public_molecule_headers APPEND .hpp)
-install(FILES ${public_molecule_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/molecule)
+# The molecule headers of the public API are the folder include/molecule;
+# the others (report JSON, batch tables, viewer scripts) sit next to their
+# sources in molecule/src/<stage>/ and are the CLI's.
+install(DIRECTORY molecule/include/molecule DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/alphapocket)
 install(EXPORT alphapocketTargets NAMESPACE alphapocket:: DESTINATION ${config_dir})

@@ -10,17 +10,17 @@
 // hetero groups from the atoms the cavities are computed on, but returns
 // them on their own (Structure::hetero_groups), so the ligand's atoms can be
 // compared with the pockets found on the empty protein. With OUTDIR, all the
-// files of `alphapocket pockets` are written there (PocketOutputDir).
+// files of `alphapocket pockets` are written there (write_outputs).
+// It uses only the installed headers (tests/install/find_package.sh builds
+// it against an installed package).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
 
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
-#include "molecule/pocket_search.hpp"
-#include "molecule/structure.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/residues.hpp"
 
 namespace {
 
@@ -29,15 +29,15 @@ double distance(const alpha::Vec3& a, const alpha::Vec3& b) {
 }
 
 int run(const std::string& file, const std::string& outdir) {
-  // 1. The atoms: waters, hydrogens and hetero groups left out, ProtOr radii.
-  const molecule::Structure structure = molecule::read_structure(file);
+  // 1. The atoms (waters, hydrogens and hetero groups left out, ProtOr
+  // radii) and 2. the cavities of the weighted alpha complex (radius +
+  // 1.4 A probe) at alpha_sq = 0, ranked; no tunnels.
+  molecule::AnalysisOptions options;
+  options.tunnels_from = "none";
+  const molecule::Analysis analysis = molecule::analyse(file, options);
+  const molecule::Structure& structure = analysis.structure;
+  const molecule::Cavities& cavities = analysis.search.cavities;
   std::printf("%s: %s\n", file.c_str(), molecule::summary(structure.report).c_str());
-
-  // 2. Cavities of the weighted alpha complex (radius + 1.4 A probe) at alpha_sq = 0.
-  molecule::CavityOptions options;
-  options.probe = 1.4;
-  const molecule::PocketSearch search = molecule::search_pockets(structure, options);
-  const molecule::Cavities& cavities = search.cavities;
   std::printf("solvent-accessible area %.0f A^2, volume %.0f A^3; %zu pockets, %zu voids, %zu tunnels\n",
               cavities.sa_area, cavities.sa_volume, cavities.pockets.size(), cavities.voids.size(),
               cavities.tunnels.size());
@@ -71,17 +71,8 @@ int run(const std::string& file, const std::string& outdir) {
   }
 
   // 4. Optionally the files of `alphapocket pockets`.
-  if (!outdir.empty()) {
-    molecule::PocketRun run;
-    run.file = file;
-    run.structure = &structure;
-    run.options = options;
-    run.version = "example";
-    run.search = &search;
-    run.mesh_format = "ply";
-    molecule::PocketOutputDir out(outdir);
-    std::printf("wrote %zu files to %s\n", out.write(run).size(), outdir.c_str());
-  }
+  if (!outdir.empty())
+    std::printf("wrote %zu files to %s\n", molecule::write_outputs(analysis, outdir).size(), outdir.c_str());
   return 0;
 }
 

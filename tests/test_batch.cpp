@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pieces of `alphapocket batch` below the CLI: which files an input
-// names and their ids (molecule/batch_inputs.hpp), predicted models and
+// names and their ids (batch/batch_inputs.hpp), predicted models and
 // their pLDDT (structure.hpp, pocket_report.hpp), the one-structure
 // pipeline (analysis.hpp) and records (batch_record.hpp). The runs
 // themselves are tested through the CLI (tests/cli/batch.sh).
@@ -17,11 +17,12 @@
 #include "alpha/error.hpp"
 #include "alpha/input_file.hpp"
 #include "molecule/analysis.hpp"
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
-#include "molecule/batch_inputs.hpp"
-#include "molecule/batch_record.hpp"
-#include "molecule/checksum.hpp"
+#include "outputs/pocket_outputs.hpp"
+#include "outputs/pocket_report.hpp"
+#include "outputs/tables.hpp"
+#include "batch/batch_inputs.hpp"
+#include "batch/batch_record.hpp"
+#include "util/checksum.hpp"
 #include "mesh_checks.hpp"
 
 namespace fs = std::filesystem;

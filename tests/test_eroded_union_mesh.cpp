@@ -106,7 +106,7 @@ TEST_CASE("surface mesh: real proteins within 1% of the analytic molecular volum
 
 TEST_CASE("cast mesh: real proteins' casts are closed and within 1% of ms_volume", "[surface_mesh]") {
   // A cast's volume is its cavity's ms_volume up to the lattice's error
-  // (README, Meshes; both split space by the same regions). Its creases
+  // (docs/outputs.md, Meshes; both split space by the same regions). Its creases
   // bent back (cells_mesh), 1a26A's pocket 10 of 7 A^3, its mouth rims long
   // for its volume, is -2.2% off at cast_spacing (-2.4% unbent); with
   // cast_mesh's finer second pass every cast of these five proteins is

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The outputs of `alphapocket pockets` (molecule::PocketOutputDir and what
-// it writes): report.json against its documented schema (README.md),
+// it writes): report.json against its documented schema (docs/outputs.md),
 // pockets.csv, meshes read back through OpenMesh, pockets.pml, pockets.pdb
 // read back through the structure reader; hand-made cavities on a grid for
 // the meshes; output directory errors.
@@ -23,12 +23,12 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
-#include "molecule/pocket_colors.hpp"
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
+#include "outputs/pocket_colors.hpp"
+#include "outputs/pocket_outputs.hpp"
+#include "outputs/pocket_report.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
-#include "molecule/structure_copy.hpp"
+#include "outputs/structure_copy.hpp"
 #include "mesh_checks.hpp"
 #include "point_sets.hpp"
 
@@ -320,7 +320,7 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
 
   const ReadMesh surface = testing::read_back(r.file("meshes/surface.ply"), true);
   CHECK(testing::closed_and_consistent(surface));
-  // examples/data/1a26A.pdb's molecular volume (README, surface --json).
+  // examples/data/1a26A.pdb's molecular volume (docs/cli.md, surface --json).
   CHECK(testing::signed_volume(surface) == Approx(44941.63).epsilon(0.01));
   // Every site is painted on it, with its rank as the vertices' site.
   const auto sites = testing::vertex_sites(r.file("meshes/surface.ply"));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Site clusters (molecule/site_clusters.hpp): hand-made rankings whose
+// Site clusters (ranking/site_clusters.hpp): hand-made rankings whose
 // clusters and centres are known, and on a real structure: every site's
 // centre is a convex combination of the cavity centres within the radius.
 #include <catch2/catch.hpp>
@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "molecule/pocket_search.hpp"
-#include "molecule/site_clusters.hpp"
-#include "molecule/site_recentering.hpp"
+#include "ranking/site_clusters.hpp"
+#include "ranking/site_recentering.hpp"
 #include "molecule/structure.hpp"
 
 namespace {

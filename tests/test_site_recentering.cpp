@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The buried surface (molecule/buried_surface.hpp) against brute force on
+// The buried surface (ranking/buried_surface.hpp) against brute force on
 // a real structure: each point on its atom's sphere and outside every
 // other, one per cube, every free lattice point's cube kept, the atom
-// counts; and the site centres (molecule/site_recentering.hpp): the mean
+// counts; and the site centres (ranking/site_recentering.hpp): the mean
 // of the buried points within the radius, recomputed by brute force, or
 // the old centre where there is none; the surface built only around the
 // centres gives the same points there.
@@ -13,10 +13,10 @@
 #include <set>
 #include <vector>
 
-#include "molecule/buried_surface.hpp"
+#include "ranking/buried_surface.hpp"
 #include "molecule/pocket_search.hpp"
-#include "molecule/site_clusters.hpp"
-#include "molecule/site_recentering.hpp"
+#include "ranking/site_clusters.hpp"
+#include "ranking/site_recentering.hpp"
 #include "molecule/structure.hpp"
 
 namespace {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "molecule/analysis.hpp"
 
-#include "molecule/pocket_outputs.hpp"
-#include "molecule/pocket_report.hpp"
+#include "outputs/pocket_outputs.hpp"
+#include "outputs/pocket_report.hpp"
 #include "molecule/radius_file.hpp"
 #include "molecule/tunnel_start.hpp"
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The bad-input catalog (issue 19): one runner for the table in
+# The bad-input catalog: one runner for the table in
 # catalog.cases, one CTest test "cli.catalog.ID.COMMAND" per row and
 # command. Usage: catalog.sh ALPHAPOCKET REPO_ROOT ID.COMMAND
 #

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# CLI traps a new user meets (issue 18), one case per CTest test.
+# CLI traps a new user meets, one case per CTest test.
 # Usage: first_use.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail
 

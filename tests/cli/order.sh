@@ -6,7 +6,7 @@
 # section, as TER records say where a polymer ends) give byte-identical
 # outputs of `pockets` (every file of OUTDIR) and `surface --json`.
 # Serial numbers travel with their records, so nothing needs to be masked:
-# the outputs list atoms in the reader's canonical order (README, Structure
+# the outputs list atoms in the reader's canonical order (docs/cli.md, Structure
 # files). Usage: order.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail
 

@@ -3,8 +3,8 @@
 # The installed package: `cmake --install` into a temporary prefix, no GMP,
 # nlohmann, OpenMesh or gemmi in the installed headers, then README's "Use
 # from C++" example built there with find_package(alphapocket) and run, the
-# pkg-config file's version and flags, and the Python module imported from
-# the prefix.
+# pkg-config file's version and flags, examples/'s programs built there
+# and run, and the Python module imported from the prefix.
 # Usage: find_package.sh BUILD_DIR REPO_ROOT
 set -euo pipefail
 build=$1
@@ -46,6 +46,26 @@ rc=$?
 set -e
 [[ $rc -eq 1 ]] || fail "bad input: exit $rc, expected 1"
 grep -q "three_atoms.pdb: .*(bad_input)" "$tmp/err" || fail "bad input message: $(cat "$tmp/err")"
+
+# examples/'s C++ programs, built against the prefix: they use only the
+# installed headers. molecule_pockets finds the bound ligand in a site.
+mkdir "$tmp/examples"
+cat >"$tmp/examples/CMakeLists.txt" <<EOF
+cmake_minimum_required(VERSION 3.22)
+project(examples CXX)
+set(CMAKE_CXX_STANDARD 20)
+find_package(alphapocket REQUIRED)
+foreach(example point_cloud_shape molecule_pockets)
+  add_executable(\${example} $root/examples/\${example}.cpp)
+  target_link_libraries(\${example} PRIVATE alphapocket::molecule)
+endforeach()
+EOF
+cmake -S "$tmp/examples" -B "$tmp/examples/build" -G Ninja -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake --build "$tmp/examples/build" >/dev/null || fail "examples/ does not build against the installed package"
+"$tmp/examples/build/molecule_pockets" "$root/examples/data/1a26A.pdb" "$tmp/example_out" >"$tmp/stdout"
+grep -qE '^ligand CNA .*: in site [0-9]+ ' "$tmp/stdout" || fail "molecule_pockets: $(cat "$tmp/stdout")"
+[[ -s $tmp/example_out/report.json ]] || fail "molecule_pockets wrote no report.json"
+"$tmp/examples/build/point_cloud_shape" "$tmp/torus.ply" >/dev/null || fail "point_cloud_shape failed"
 
 # pkg-config: version and a program linked with its flags.
 export PKG_CONFIG_PATH=$tmp/prefix/lib/pkgconfig

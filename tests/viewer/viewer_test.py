@@ -233,7 +233,7 @@ def view_case(structure, object_name, *args, min_paths=1):
         # partly behind others (1a26A's is a 56 A^3 pocket): 0.25 % of the image.
         color = top_color(pml, top)
         if color != (228, 26, 28):
-            fail(f"the top site {top} is {color}, not red (molecule/pocket_colors.hpp: the best site is red)")
+            fail(f"the top site {top} is {color}, not red (outputs/pocket_colors.hpp: the best site is red)")
         with_top, central, pixels = near_color_pixels(os.path.join(tmp, "cwd", "view.png"), color)
         cast, cast_central, _ = near_color_pixels(os.path.join(tmp, "cwd", "cast.png"), color)
         without_top, _, _ = near_color_pixels(os.path.join(tmp, "cwd", "without_top.png"), color)

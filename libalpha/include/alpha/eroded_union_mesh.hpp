@@ -16,7 +16,7 @@
 // step, taken without evaluating, crosses a change of the nearest piece):
 // the vertices lie on the exact surface up to that, so area and
 // volume converge to the analytic ones as the spacing shrinks (on 1A26
-// chain A at 0.5 A both are within 1%; see README).
+// chain A at 0.5 A both are within 1%; see docs/outputs.md, Meshes).
 //
 // A cast (cells_mesh) is the set of points outside the eroded body whose
 // space is counted in the cells' shares (ErodedUnion::share_cell): the free

@@ -153,7 +153,7 @@ struct Site {
   std::size_t index = 0;  // into Cavities::pockets, or Cavities::voids if is_void
   // Where the site's ligand is expected: the cavity's centre, or, ranked
   // by probability, the centre of the cluster the site heads
-  // (molecule/site_clusters.hpp).
+  // (ranking/site_clusters.hpp).
   alpha::Vec3 center{};
 };
 

@@ -36,7 +36,7 @@ struct PocketMeshes {
 // Default triangle size of the surface: within 1% of the analytic area
 // and volume with room to spare (on pockets-dev the area is 0.53-0.70%
 // short, the volume within 0.17%; at 0.9 A the area is up to 1.07% short:
-// README, Meshes), in under half a second for a 3,000-atom protein.
+// docs/outputs.md, Meshes), in under half a second for a 3,000-atom protein.
 inline constexpr double kDefaultMeshResolution = 0.7;
 
 // A cast's lattice is finer than the surface's: kCastResolution at the

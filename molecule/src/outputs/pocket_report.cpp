@@ -1,0 +1,386 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "outputs/pocket_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "alpha/error.hpp"
+#include "molecule/residues.hpp"
+#include "outputs/tables.hpp"
+#include "ranking/ligand_sites.hpp"
+
+namespace molecule {
+namespace {
+
+using json = nlohmann::ordered_json;  // keys in the documented order
+
+double rounded(double x, double scale) {
+  const double r = std::round(x * scale) / scale;
+  return r == 0 ? 0.0 : r;  // no -0 in the output
+}
+double length(double x) { return rounded(x, 1e3); }  // also areas and volumes
+// Scores span many decades (burial enters to the 12th power): 4
+// significant digits, so that small molecules' scores do not all read 0.
+double score(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return std::strtod(text, nullptr) + 0.0;  // + 0.0: no -0
+}
+
+std::vector<alpha::Index> all_atoms(std::size_t n) {
+  std::vector<alpha::Index> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = alpha::Index(i);
+  return out;
+}
+
+// Probabilities to 4 decimals; null where none was computed (find_cavities alone).
+json probability(double p) { return std::isnan(p) ? json() : json(rounded(p, 1e4)); }
+
+json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
+
+json lining_atoms(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+  json out = json::array();
+  for (const alpha::Index i : indices) {
+    const Atom& a = atoms.at(i);
+    out.push_back({{"serial", a.serial}, {"name", a.name}, {"element", a.element}, {"residue", residue_id(a)}});
+  }
+  return out;
+}
+
+json lining_residues(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+  json out = json::array();
+  for (const alpha::Index i : residues_of(atoms, indices)) {
+    const Atom& a = atoms[i];
+    out.push_back({{"id", residue_id(a)},
+                   {"chain", a.chain},
+                   {"name", a.residue_name},
+                   {"number", a.seq_num},
+                   {"insertion_code", icode_text(a.icode)}});
+  }
+  return out;
+}
+
+json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const std::string& kind) {
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  json mouth_areas = json::array();
+  std::size_t mouths_to_outside = 0;
+  for (const Mouth& m : c.mouths) {
+    mouth_areas.push_back(length(m.area));
+    mouths_to_outside += m.to_outside;
+  }
+  json e = {
+      {"rank", rank},
+      {"score", score(c.score)},
+      {"probability", probability(c.probability)},
+      {"sa_volume", length(c.sa_volume)},
+      {"sa_area", length(c.sa_area)},
+      {"ms_volume", length(c.ms_volume)},
+      {"ms_area", length(c.ms_area)},
+      {"mouths", c.mouths.size()},
+      {"mouths_to_outside", mouths_to_outside},
+      {"mouth_areas", std::move(mouth_areas)},
+      {"mouth_area", length(c.mouth_area)},
+      {"buriedness", score(c.buriedness)},
+      {"burial_atoms", c.burial_atoms},
+      {"depth", length(c.depth)},
+      {"center", point(c.center)},
+      {"tetrahedra", c.cells.size()},
+      {"max_alpha_sq", c.max_alpha_sq},
+      {"max_probe_radius", length(c.max_probe_radius)},
+      {"close_alpha_sq", c.close_alpha_sq},
+      {"fill_alpha_sq", c.fill_alpha_sq},
+      {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
+      {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},
+      {"lining_residues", lining_residues(atoms, c.lining_atoms)},
+  };
+  if (!run.mesh_format.empty()) e["mesh"] = cavity_mesh_path(kind, rank, run.mesh_format);
+  return e;
+}
+
+json cavity_list(const PocketRun& run, const std::vector<Cavity>& list, const std::string& kind) {
+  json out = json::array();
+  for (std::size_t i = 0; i < list.size(); ++i) out.push_back(cavity_entry(run, list[i], i + 1, kind));
+  return out;
+}
+
+std::string ligand_id(const HeteroGroup& g) {
+  return g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num) + icode_text(g.icode);
+}
+
+json holding(const LigandSite& l) {
+  json out = json::array();
+  for (const auto& [rank, atoms] : l.holding) out.push_back({{"site", rank}, {"atoms", atoms}});
+  return out;
+}
+
+// Every hetero group with the site that holds it (ranking/ligand_sites.hpp).
+json ligand_list(const PocketRun& run, const std::vector<LigandSite>& where) {
+  json out = json::array();
+  for (const LigandSite& l : where) {
+    const HeteroGroup& g = run.structure->hetero_groups.at(l.group);
+    const auto rank = [](std::size_t r) { return r ? json(r) : json(nullptr); };
+    out.push_back({{"id", ligand_id(g)},
+                   {"name", g.residue_name},
+                   {"chain", g.chain},
+                   {"number", g.seq_num},
+                   {"insertion_code", icode_text(g.icode)},
+                   {"heavy_atoms", g.atoms.size()},
+                   {"kept", g.kept},
+                   {"site", rank(l.site)},
+                   {"nearest_site", g.kept ? json(nullptr) : rank(l.nearest_site)},
+                   {"distance", g.kept || !l.nearest_site ? json(nullptr) : json(length(l.distance))},
+                   {"atoms_in_site", l.atoms_in_site},
+                   {"in_sites", holding(l)}});
+  }
+  return out;
+}
+
+// The binding-site ranking: which pocket or void each site is (its rank in
+// that list), with the score, centre and lining residues repeated for
+// scripts, and the ids of the hetero groups it holds.
+json site_list(const PocketRun& run, const json& ligands) {
+  const Cavities& cavities = run.search->cavities;
+  json out = json::array();
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    const Cavity& c = cavities.cavity(s);
+    json held = json::array();
+    ++rank;
+    for (const json& l : ligands) {
+      bool in = l["site"] == rank;
+      for (const json& h : l["in_sites"]) in = in || h["site"] == rank;
+      if (in) held.push_back(l["id"]);
+    }
+    out.push_back({{"rank", rank},
+                   {"kind", s.is_void ? "void" : "pocket"},
+                   {"cavity_rank", s.index + 1},
+                   {"score", score(c.score)},
+                   {"probability", probability(c.probability)},
+                   {"sa_volume", length(c.sa_volume)},
+                   {"center", point(s.center)},
+                   {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
+                   {"lining_residues", lining_residues(run.structure->atoms, c.lining_atoms)},
+                   {"ligands", std::move(held)}});
+  }
+  return out;
+}
+
+std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
+
+json profile_of(const TunnelPath& p) {
+  json out = json::array();
+  for (const ProfilePoint& q : p.profile) out.push_back({length(q.x.x), length(q.x.y), length(q.x.z), length(q.radius)});
+  return out;
+}
+
+// Cycles first (rank = their tunnel_N in pockets.pml and pockets.pdb), then
+// the tunnels and pores.
+json tunnel_list(const PocketRun& run) {
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::size_t cycles = run.search->cavities.tunnels.size();
+  json out = json::array();
+  std::size_t rank = 0;
+  for (const Tunnel& t : run.search->cavities.tunnels) {
+    json entry = {{"rank", ++rank},
+                  {"kind", "cycle"},
+                  {"birth_alpha_sq", t.birth_alpha_sq},
+                  {"death_alpha_sq", t.death_alpha_sq},
+                  {"bottleneck_radius", length(t.bottleneck_radius)},
+                  {"bottleneck_center", point(t.bottleneck_center)},
+                  {"length", nullptr},
+                  {"path", nullptr},
+                  {"profile", json::array()},
+                  {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
+                  {"lining_residues", lining_residues(atoms, t.lining_atoms)}};
+    const std::size_t through = path_through(run, t);
+    if (through != std::size_t(-1)) {
+      entry["length"] = length((*run.paths)[through].length);
+      entry["path"] = cycles + through + 1;
+      entry["profile"] = profile_of((*run.paths)[through]);
+    }
+    out.push_back(std::move(entry));
+  }
+  for (std::size_t i = 0; i < num_paths(run); ++i) {
+    const TunnelPath& p = (*run.paths)[i];
+    const auto finite = [](double x) { return std::isfinite(x) ? json(length(x)) : json(nullptr); };
+    out.push_back({{"rank", ++rank},
+                   {"kind", p.pore ? "pore" : "tunnel"},
+                   {"start", p.pore ? json(nullptr) : json(run.tunnel_starts.at(p.start))},
+                   {"bottleneck_radius", length(p.bottleneck_radius)},
+                   {"bottleneck_center", point(p.bottleneck)},
+                   {"length", length(p.length)},
+                   {"curvature", finite(p.curvature)},
+                   {"cost", score(p.cost)},
+                   {"start_point", point(p.start_point)},
+                   {"mouth", point(p.mouth)},
+                   {"profile", profile_of(p)},
+                   {"lining_residues", lining_residues(atoms, p.lining_atoms)}});
+  }
+  return out;
+}
+
+// A number as report.json has it (the shortest text that reads back the
+// same).
+std::string csv_number(double x) { return json(x).dump(); }
+
+}  // namespace
+
+json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms) {
+  if (!structure.report.predicted) return nullptr;
+  const std::vector<alpha::Index> residues = residues_of(structure.atoms, atoms);
+  if (residues.empty()) return nullptr;
+  double sum = 0;
+  for (const alpha::Index i : residues) sum += structure.atoms[i].b_factor;
+  return length(sum / double(residues.size()));
+}
+
+std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format) {
+  return "meshes/" + kind + "_" + std::to_string(rank) + "." + format;
+}
+
+std::string molecule_mesh_path(const std::string& format) { return "meshes/surface." + format; }
+
+json pocket_report(const PocketRun& run) {
+  const StructureReport& r = run.structure->report;
+  json input = {
+      {"file", run.file},
+      {"format", r.format},
+      {"gzipped", r.gzipped},
+      {"predicted", r.predicted},
+      {"model", r.model},
+      {"atoms_in_model", r.atoms_in_model},
+      {"atoms_kept", r.kept},
+      {"atoms_dropped",
+       {{"chain", r.dropped_chain},
+        {"altloc", r.dropped_altloc},
+        {"water", r.dropped_water},
+        {"hetero", r.dropped_hetero},
+        {"hydrogen", r.dropped_hydrogen},
+        {"plddt", r.dropped_plddt}}},
+      {"hetero_groups", r.hetero_groups},
+      {"warnings", r.warnings},
+  };
+  json parameters = {
+      {"probe", run.options.probe},
+      {"min_volume", run.options.min_volume},
+      {"split_persistence", run.options.split_persistence},
+      {"split_volume", run.options.split_volume},
+      {"split_min_volume", run.options.split_min_volume},
+      {"min_plddt", run.min_plddt},
+      {"radii", run.radii},
+      {"tunnels_from", run.tunnels_from},
+      {"tunnel_probe", run.tunnel_options.probe},
+      {"pores", run.tunnel_options.pores},
+      {"alpha_sq", 0.0},
+  };
+  json molecule = {{"atoms", run.structure->atoms.size()},
+                   {"sa_area", length(run.search->cavities.sa_area)},
+                   {"sa_volume", length(run.search->cavities.sa_volume)},
+                   {"pockets", run.search->cavities.pockets.size()},
+                   {"voids", run.search->cavities.voids.size()},
+                   {"sites", run.search->cavities.sites.size()},
+                   {"tunnels", run.search->cavities.tunnels.size()},
+                   {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))},
+                   {"tunnel_paths", num_paths(run)}};
+  if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
+  const json ligands = ligand_list(run, ligand_sites(*run.structure, *run.search));
+  return {
+      {"alphapocket", run.version},
+      {"input", std::move(input)},
+      {"parameters", std::move(parameters)},
+      {"molecule", std::move(molecule)},
+      {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
+      {"voids", cavity_list(run, run.search->cavities.voids, "void")},
+      {"sites", site_list(run, ligands)},
+      {"ligands", ligands},
+      {"tunnels", tunnel_list(run)},
+  };
+}
+
+std::string report_file_text(const nlohmann::ordered_json& report) {
+  return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+std::string pockets_csv(const PocketRun& run) {
+  std::string out =
+      "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
+      "lining_residues,residues,mean_plddt\n";
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  std::size_t rank = 0;
+  for (const Cavity& c : run.search->cavities.pockets) {
+    const std::vector<alpha::Index> residues = residues_of(atoms, c.lining_atoms);
+    std::string names;
+    for (const alpha::Index i : residues) {
+      if (!names.empty()) names += ' ';
+      names += residue_id(atoms[i]);
+    }
+    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' +
+           (std::isnan(c.probability) ? std::string() : csv_number(rounded(c.probability, 1e4)));
+    for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
+                           length(c.ms_area)})
+      out += ',' + csv_number(x);
+    out += ',' + std::to_string(c.mouths.size());
+    for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
+                           length(c.center.z)})
+      out += ',' + csv_number(x);
+    const json plddt = mean_plddt(*run.structure, c.lining_atoms);
+    out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + ',' +
+           (plddt.is_null() ? std::string() : plddt.dump()) + '\n';
+  }
+  return out;
+}
+
+}  // namespace molecule
+
+namespace molecule {
+
+std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
+  for (std::size_t i = 0; i < num_paths(run); ++i) {
+    const TunnelPath& p = (*run.paths)[i];
+    if (std::find(p.triangles.begin(), p.triangles.end(), cycle.bottleneck_triangle) != p.triangles.end()) return i;
+    // Ties: another triangle with the same narrowest point (a ring of
+    // cocircular atoms, all triangles of its disc centred alike).
+    for (const alpha::Vec3& x : p.centreline)
+      if (norm(x - cycle.bottleneck_center) < 1e-9) return i;
+  }
+  return std::size_t(-1);
+}
+
+std::string tunnels_csv(const PocketRun& run) {
+  std::string out =
+      "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
+      "lining_residues,residues\n";
+  const json report = tunnel_list(run);
+  for (const json& t : report) {
+    const auto num = [&](const json& x) { return x.is_null() ? std::string() : x.dump(); };
+    std::string names;
+    for (const json& r : t["lining_residues"]) {
+      if (!names.empty()) names += ' ';
+      names += r["id"].get<std::string>();
+    }
+    out += num(t["rank"]) + ',' + t["kind"].get<std::string>() + ',' +
+           csv_field(t.contains("start") && !t["start"].is_null() ? t["start"].get<std::string>() : "") + ',' +
+           num(t["bottleneck_radius"]);
+    for (const json& x : t["bottleneck_center"]) out += ',' + num(x);
+    out += ',' + num(t["length"]) + ',' + (t.contains("curvature") ? num(t["curvature"]) : "") + ',' +
+           (t.contains("cost") ? num(t["cost"]) : "") + ',' + std::to_string(t["lining_residues"].size()) + ',' +
+           csv_field(names) + '\n';
+  }
+  return out;
+}
+
+std::string tunnel_profiles_csv(const PocketRun& run) {
+  std::string out = "tunnel,distance,x,y,z,radius\n";
+  const std::size_t cycles = run.search->cavities.tunnels.size();
+  for (std::size_t i = 0; i < num_paths(run); ++i)
+    for (const ProfilePoint& q : (*run.paths)[i].profile) {
+      out += std::to_string(cycles + i + 1);
+      for (const double x : {q.distance, q.x.x, q.x.y, q.x.z, q.radius}) out += ',' + csv_number(length(x));
+      out += '\n';
+    }
+  return out;
+}
+
+}  // namespace molecule

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: Apache-2.0
+// The machine-readable results of `alphapocket pockets`: report.json (every
+// number of the run, schema documented in docs/outputs.md, "report.json")
+// and pockets.csv (one row per pocket, for spreadsheets and scripts).
+//
+// Lengths in A, areas in A^2, volumes in A^3, rounded to 3 decimals (1e-3 A
+// is far below the precision of any structure); scores and buriedness to
+// 4 significant digits; values named *_alpha_sq are squared radii, kept at
+// full precision (they are critical values of the spectrum one may pass
+// back to --alpha-sq).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "alpha/geometry.hpp"
+#include "molecule/cavities.hpp"
+#include "molecule/pocket_meshes.hpp"
+#include "molecule/pocket_search.hpp"
+#include "molecule/radii.hpp"
+#include "molecule/residues.hpp"
+#include "molecule/structure.hpp"
+#include "molecule/tunnel_paths.hpp"
+
+namespace molecule {
+
+// Everything one run produced. Pointers are borrowed; atom indices of the
+// cavities (Cavity::lining_atoms) are indices into structure->atoms.
+struct PocketRun {
+  std::string file;  // the input, as given
+  const Structure* structure = nullptr;
+  CavityOptions options;
+  std::string version;  // of alphapocket
+  const PocketSearch* search = nullptr;
+  std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
+  double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
+  std::string radii = std::string(kRadiusTable);  // the radius table, or the --radii file
+  // Tunnels and pores (find_tunnel_paths); null: none computed.
+  const std::vector<TunnelPath>* paths = nullptr;
+  std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
+  std::string tunnels_from = "auto";
+  TunnelOptions tunnel_options;
+  double mesh_resolution = kDefaultMeshResolution;  // lattice spacing of the surface mesh, A
+};
+
+// Predicted models: the mean pLDDT (B-factor) of the residues of these
+// atoms, one value per residue (its first atom's: a model gives all atoms
+// of a residue the same), rounded to 3 decimals; null for other structures.
+nlohmann::ordered_json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms);
+
+// Mesh file of a cavity inside the output directory, e.g.
+// "meshes/pocket_1.ply"; kind is "pocket" or "void". The molecular
+// surface's is "meshes/surface.<format>".
+std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format);
+std::string molecule_mesh_path(const std::string& format);
+
+nlohmann::ordered_json pocket_report(const PocketRun& run);
+// The report as Analysis holds it (analysis.hpp keeps JSON out of its header).
+struct Report {
+  nlohmann::ordered_json json;
+};
+// report.json's text: indented by 2, invalid UTF-8 in names replaced (U+FFFD).
+std::string report_file_text(const nlohmann::ordered_json& report);
+std::string pockets_csv(const PocketRun& run);
+// tunnels.csv (one row per entry of report.json's tunnels) and
+// tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,
+// one row per profile point of each tunnel and pore).
+std::string tunnels_csv(const PocketRun& run);
+std::string tunnel_profiles_csv(const PocketRun& run);
+// The index into *run.paths of the first path that runs through a cycle's
+// bottleneck (crosses its killing triangle, or passes its bottleneck
+// centre), or npos.
+std::size_t path_through(const PocketRun& run, const Tunnel& cycle);
+
+}  // namespace molecule

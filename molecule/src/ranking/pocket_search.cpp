@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "molecule/pocket_search.hpp"
+
+#include <chrono>
+#include <utility>
+#include <vector>
+
+#include "molecule/atom_balls.hpp"
+
+namespace molecule {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+PocketSearch search_pockets(const Structure& structure, const CavityOptions& options, SiteRanking ranking) {
+  PocketSearch out;
+  const auto start = std::chrono::steady_clock::now();
+  AtomBalls balls = atom_balls(structure.atoms, options.probe);
+  std::vector<double> radii;
+  radii.reserve(structure.atoms.size());
+  for (const Atom& a : structure.atoms) radii.push_back(a.radius);
+  out.triangulation = std::make_unique<alpha::Triangulation>(std::move(balls.points), std::move(balls.weights));
+  out.complex = std::make_unique<alpha::AlphaComplex>(*out.triangulation);
+  out.complex_seconds = seconds_since(start);
+
+  const auto cavities_start = std::chrono::steady_clock::now();
+  out.cavities = find_cavities(*out.complex, radii, options);
+  out.cavities_seconds = seconds_since(cavities_start);
+  const auto ranking_start = std::chrono::steady_clock::now();
+  rank_sites(structure, out.cavities, ranking);
+  out.ranking_seconds = seconds_since(ranking_start);
+  return out;
+}
+
+}  // namespace molecule

@@ -1,0 +1,862 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "molecule/structure.hpp"
+
+// Compiled as C++17 by clang (molecule/CMakeLists.txt): no std::span or
+// starts_with here.
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <charconv>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <unordered_map>
+#include <sstream>
+
+#include <gemmi/cif.hpp>
+#include <gemmi/mmcif.hpp>
+#include <gemmi/pdb.hpp>
+#include <gemmi/polyheur.hpp>
+#include <gemmi/resinfo.hpp>
+
+#include "alpha/input_file.hpp"
+#include "util/case_insensitive.hpp"
+#include "util/gunzip.hpp"
+#include "molecule/radii.hpp"
+#include "util/safe_text.hpp"
+
+namespace molecule {
+namespace {
+
+// The problem may quote the file's own bytes (a record, a token): any
+// control or non-ASCII byte among them becomes '?', so the message stays
+// one line and prints nothing but text.
+[[noreturn]] void fail(const std::string& name, const std::string& what,
+                       alpha::ErrorKind kind = alpha::ErrorKind::BadInput) {
+  throw StructureError(name + ": " + printable_ascii(what), kind);
+}
+
+// ---------------------------------------------------------------- input
+
+bool is_blank(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+}
+
+std::string_view trimmed(std::string_view text) {
+  const std::size_t begin = text.find_first_not_of(" \t");
+  if (begin == std::string_view::npos) return {};
+  return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
+}
+
+enum class Format { Pdb, Mmcif };
+
+// mmCIF: the first thing after blanks and comments is a data_ block.
+bool starts_with_data_block(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      ++i;
+    } else if (text[i] == '#') {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) return false;
+    } else {
+      break;
+    }
+  }
+  std::string_view head = text.substr(i, 5);
+  return head.size() == 5 && ends_with_ci(head, "data_");
+}
+
+// PDB: some line is an ATOM or HETATM record.
+bool has_atom_records(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::string_view line = text.substr(i, 6);
+    if (line.substr(0, 5) == "ATOM " || line == "HETATM") return true;
+    const std::size_t eol = text.find('\n', i);
+    if (eol == std::string_view::npos) break;
+    i = eol + 1;
+  }
+  return false;
+}
+
+Format detect_format(std::string_view text, const std::string& name) {
+  if (starts_with_data_block(text)) return Format::Mmcif;
+  if (has_atom_records(text)) return Format::Pdb;
+  if (text.substr(0, 4096).find('\0') != std::string_view::npos) fail(name, "binary data, not a PDB or mmCIF file");
+  fail(name, "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)");
+}
+
+// A coordinate field of a PDB record: blanks, an optional sign, digits with
+// at most one decimal point, blanks.
+bool is_pdb_number(std::string_view field) {
+  std::size_t i = field.find_first_not_of(' ');
+  if (i == std::string_view::npos) return false;
+  if (field[i] == '-' || field[i] == '+') ++i;
+  bool digits = false;
+  bool point = false;
+  for (; i < field.size() && field[i] != ' '; ++i) {
+    if (field[i] >= '0' && field[i] <= '9')
+      digits = true;
+    else if (field[i] == '.' && !point)
+      point = true;
+    else
+      return false;
+  }
+  return digits && field.find_first_not_of(' ', i) == std::string_view::npos;
+}
+
+// What gemmi reads as a charge from columns 79-80 ("2+", "+2", "2", blank);
+// it rejects other text without saying where.
+bool is_pdb_charge(char c79, char c80) {
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  const auto sign = [](char c) { return c == '+' || c == '-' || c == ' '; };
+  return !(digit(c79) && !sign(c80)) && !(digit(c80) && !sign(c79));
+}
+
+// Calls fn(line_number, line) for each line of text (numbered from 1, a
+// trailing '\r' removed) until fn returns false.
+template <class Fn>
+void for_each_line(std::string_view text, Fn fn) {
+  std::size_t line_number = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t eol = text.find('\n', i);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(i, eol - i);
+    i = eol + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (!fn(++line_number, line)) return;
+  }
+}
+
+// Far beyond any structure (the largest assemblies span some 1e4 A), so a
+// coordinate beyond it is a broken file.
+constexpr double kMaxCoordinate = 1e6;
+
+// What the text of an atom record says that gemmi's structure no longer
+// does: the element symbols gemmi does not know (it reads them as X), each
+// with the first line holding it.
+using UnknownElements = std::map<std::string, std::size_t>;
+
+// gemmi reads a coordinate that is not a number ("abc", blank) as 0 without
+// a word, and rejects a bad charge without a line number, so the records it
+// reads are checked here first: those starting with ATOM or HETA in any
+// case, up to an END record. `old_columns`: columns 73-80 are not read.
+void check_pdb_records(std::string_view text, const std::string& name, bool old_columns, UnknownElements& unknown) {
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
+    if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
+        (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
+      return false;
+    const auto error = [&](const std::string& what) {
+      fail(name, "line " + std::to_string(line_number) + ": " + what);
+    };
+    // gemmi reads the distance of a SSBOND or LINK record longer than 73
+    // characters from columns 74-78, past the record's end when it is
+    // shorter. Its record is the line up to a NUL, with the CR and LF.
+    if ((equals_ci(line.substr(0, 4), "ssbo") || equals_ci(line.substr(0, 4), "link")) && !old_columns) {
+      std::size_t length = line.find('\0');
+      if (length == std::string_view::npos) {
+        const std::size_t end = std::size_t(line.data() - text.data()) + line.size();
+        length = std::min(text.size(), text.find('\n', end) + 1) - std::size_t(line.data() - text.data());
+      }
+      if (length > 73 && length < 78)
+        error(std::string(trimmed(line.substr(0, 6))) + " record ends inside its distance field (columns 74-78)");
+    }
+    const bool atom = equals_ci(line.substr(0, 4), "atom");
+    if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
+    const std::string_view record = atom ? "ATOM" : "HETATM";
+    if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
+    if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
+      error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
+            std::string(line.substr(30, 24)) + "')");
+    for (std::size_t column = 30; column < 54; column += 8)
+      if (std::fabs(std::strtod(std::string(line.substr(column, 8)).c_str(), nullptr)) > kMaxCoordinate)
+        error("coordinate '" + std::string(line.substr(column, 8)) + "' (columns " + std::to_string(column + 1) +
+              "-" + std::to_string(column + 8) + ") is beyond 1e6 A");
+    // Columns 77-78 as gemmi reads them: an element when either is a letter.
+    if (!old_columns && line.size() > 76 &&
+        (std::isalpha(static_cast<unsigned char>(line[76])) ||
+         (line.size() > 77 && std::isalpha(static_cast<unsigned char>(line[77]))))) {
+      const std::string symbol(trimmed(line.substr(76, 2)));
+      if (gemmi::find_element(symbol.c_str()) == gemmi::El::X) unknown.emplace(symbol, line_number);
+    }
+    if (!old_columns && line.size() >= 79 && !is_pdb_charge(line[78], line.size() >= 80 ? line[79] : ' '))
+      error("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
+            "')");
+    return true;
+  });
+}
+
+// Columns 73-80 of the PDB format before 1996 (e.g. HOLE's gramicidin,
+// gemmi's pdb1gdr.ent): the id code and a line number ("1GRM 125"), where
+// the current format has the segment id, element and charge. Such a record
+// has a right-justified number of two digits or more in columns 77-80,
+// which no element and charge can be. The first one found, with its line
+// number, tells the file is in that format.
+struct OldColumns {
+  std::size_t line_number = 0;
+  std::string text;  // columns 73-80
+};
+
+std::optional<OldColumns> old_format_columns(std::string_view text) {
+  std::optional<OldColumns> found;
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
+    if (line.size() < 80 || !(equals_ci(line.substr(0, 4), "atom") || equals_ci(line.substr(0, 4), "heta")))
+      return true;
+    const std::string_view tail = line.substr(76, 4);
+    const std::size_t first_digit = tail.find_first_not_of(' ');
+    if (first_digit > 2) return true;
+    if (std::all_of(tail.begin() + first_digit, tail.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      found = OldColumns{line_number, std::string(line.substr(72, 8))};
+      return false;
+    }
+    return true;
+  });
+  return found;
+}
+
+// mmCIF data without its data_ block (gemmi would take the rows for PDB
+// records): the line of the first CIF tag or loop_, before any data_.
+std::optional<std::size_t> cif_without_data_block(std::string_view text) {
+  std::optional<std::size_t> found;
+  for_each_line(text, [&](std::size_t line_number, std::string_view line) {
+    if ((!line.empty() && line[0] == '_') || equals_ci(line.substr(0, 5), "loop_")) found = line_number;
+    return !found && !equals_ci(line.substr(0, 5), "data_");
+  });
+  return found;
+}
+
+// The line of value `index` (row by row) of the loop whose loop_ keyword is
+// on line `loop_line`: the CIF tokens from there counted (the tags, then
+// the values; quoted strings, ;-text fields and comments as CIF has them).
+// gemmi's document keeps the line of a loop, not of its values.
+std::size_t loop_value_line(std::string_view text, std::size_t loop_line, std::size_t tags, std::size_t index) {
+  std::size_t i = 0;
+  for (std::size_t line = 1; line < loop_line && i < text.size(); ++line) i = text.find('\n', i) + 1;
+  std::size_t line = loop_line;
+  const std::size_t wanted = 1 + tags + index;  // loop_ itself first
+  const auto space = [&](std::size_t k) { return std::isspace(static_cast<unsigned char>(text[k])) != 0; };
+  for (std::size_t token = 0; i < text.size();) {
+    if (text[i] == '\n') {
+      ++line;
+      ++i;
+    } else if (space(i)) {
+      ++i;
+    } else if (text[i] == '#') {
+      i = std::min(text.find('\n', i), text.size());
+    } else {
+      const std::size_t start_line = line;
+      if (text[i] == ';' && (i == 0 || text[i - 1] == '\n')) {  // a text field, to a line starting with ';'
+        const std::size_t end = std::min(text.find("\n;", i), text.size());
+        line += std::size_t(std::count(text.begin() + i, text.begin() + end, '\n')) + 1;
+        i = end + 2;
+      } else if (text[i] == '\'' || text[i] == '"') {  // to the same quote before a blank
+        const char quote = text[i++];
+        while (i < text.size() && text[i] != '\n' && !(text[i] == quote && (i + 1 == text.size() || space(i + 1))))
+          ++i;
+        ++i;
+      } else {
+        while (i < text.size() && !space(i)) ++i;
+      }
+      if (token++ == wanted) return start_line;
+    }
+  }
+  return loop_line;
+}
+
+// The _atom_site columns gemmi requires (mmcif.hpp, make_structure_from_block;
+// label/auth_comp_id and label/auth_atom_id it checks itself): without one it
+// reads no atoms at all, without saying why.
+constexpr const char* kRequiredAtomSite[] = {"id",      "type_symbol", "label_alt_id", "label_asym_id",  "Cartn_x",
+                                             "Cartn_y", "Cartn_z",     "occupancy",    "B_iso_or_equiv", "auth_seq_id"};
+
+// Whether gemmi's string_to_int would overflow on v (undefined behaviour):
+// the run of digits after blanks and a sign is beyond 2^31 - 1.
+bool int_overflows(const std::string& v) {
+  std::size_t i = 0;
+  while (i < v.size() && (v[i] == ' ' || v[i] == '\t')) ++i;
+  if (i < v.size() && (v[i] == '-' || v[i] == '+')) ++i;
+  while (i < v.size() && v[i] == '0') ++i;
+  std::size_t end = i;
+  while (end < v.size() && v[end] >= '0' && v[end] <= '9') ++end;
+  const std::string_view digits(v.data() + i, end - i);
+  return digits.size() > 10 || (digits.size() == 10 && digits > "2147483647");
+}
+
+// gemmi converts the _atom_site values it reads (a single character, an
+// integer, a number) without saying where a bad one is, and reads a
+// coordinate that is not a number as NaN, so its table is checked here
+// first, each bad value named with its line and its text. The table is
+// found as gemmi finds it (the loop holding _atom_site.id if it has every
+// required column, else pair items), so no other loop hides a bad value.
+// Unknown element symbols are noted.
+void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std::string& name,
+                     UnknownElements& unknown) {
+  std::vector<std::string> tags(std::begin(kRequiredAtomSite), std::end(kRequiredAtomSite));
+  enum { kId = 0, kSymbol = 1, kAlt = 2, kX = 4, kAuthSeq = 9, kIcode, kLabelSeq, kCharge };
+  for (const char* optional : {"?pdbx_PDB_ins_code", "?label_seq_id", "?pdbx_formal_charge"}) tags.emplace_back(optional);
+  gemmi::cif::Table table = block.find("_atom_site.", tags);
+  if (!table.ok()) return;
+  const gemmi::cif::Item* loop = table.loop_item;
+  const auto line_of = [&](std::size_t row, std::size_t col) {
+    const std::size_t position = std::size_t(table.positions[col]);
+    return loop ? loop_value_line(text, std::size_t(loop->line_number), loop->loop.width(),
+                                  row * loop->loop.width() + position)
+                : std::size_t(block.items[position].line_number);
+  };
+  const auto bad = [&](std::size_t row, std::size_t col, const std::string& what) {
+    const std::string& tag = tags[col];
+    fail(name, "line " + std::to_string(line_of(row, col)) + ": _atom_site." + tag.substr(tag[0] == '?') + " is '" +
+                   table[int(row)][col] + "', " + what);
+  };
+  for (std::size_t row = 0; row < table.length(); ++row) {
+    const gemmi::cif::Table::Row values = table[int(row)];
+    for (const std::size_t c : {std::size_t(kId), std::size_t(kAuthSeq), std::size_t(kLabelSeq), std::size_t(kCharge)})
+      if (values.has(c) && int_overflows(values[c])) bad(row, c, "an integer beyond 2147483647");
+    for (const std::size_t c : {std::size_t(kAlt), std::size_t(kIcode)})
+      if (values.has(c)) try {
+          gemmi::cif::as_char(values[c], ' ');
+        } catch (const std::exception&) {
+          bad(row, c, "not a single character");
+        }
+    for (const std::size_t c : {std::size_t(kLabelSeq), std::size_t(kCharge)})
+      if (values.has(c)) try {
+          gemmi::cif::as_int(values[c], 0);
+        } catch (const std::exception&) {
+          bad(row, c, "not an integer");
+        }
+    try {
+      gemmi::impl::make_seqid(values[kAuthSeq], values.has(kIcode) ? &values[kIcode] : nullptr);
+    } catch (const std::exception&) {
+      bad(row, kAuthSeq, "not a residue number (an integer, optionally followed by the insertion code)");
+    }
+    for (std::size_t c = kX; c < kX + 3; ++c) {
+      const std::string& v = values[c];
+      const double x = gemmi::cif::as_number(v);
+      if (gemmi::cif::is_null(v))
+        bad(row, c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
+      if (std::isnan(x)) bad(row, c, "not a number");
+      if (!(std::fabs(x) <= kMaxCoordinate)) bad(row, c, "beyond 1e6 A");
+    }
+    if (!gemmi::cif::is_null(values[kSymbol])) {
+      const std::string element = gemmi::cif::as_string(values[kSymbol]);
+      if (gemmi::find_element(element.c_str()) == gemmi::El::X && !unknown.count(element))
+        unknown.emplace(element, line_of(row, kSymbol));
+    }
+  }
+}
+
+std::string join(const std::vector<std::string>& items, std::size_t max_items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size() && i < max_items; ++i) s += (i ? ", " : "") + items[i];
+  if (items.size() > max_items) s += ", ...";
+  return s;
+}
+
+// gemmi's messages may span lines and may name the file already.
+std::string one_line(std::string s, const std::string& name) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  s = printable_ascii(s);  // gemmi quotes the record, bytes and all
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  // Some end with ": NAME" ("Incorrect file format (perhaps it is cif not
+  // pdb?): NAME"); ours start with it.
+  const std::string suffix = ": " + name;
+  if (s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0)
+    s.erase(s.size() - suffix.size());
+  return s.compare(0, name.size(), name) == 0 ? s : name + ": " + s;
+}
+
+// The required columns a block's _atom_site lacks; none if it has no _atom_site.
+std::vector<std::string> missing_atom_site_columns(gemmi::cif::Block& block) {
+  std::vector<std::string> missing;
+  if (!block.find_mmcif_category("_atom_site.").ok()) return missing;
+  for (const char* column : kRequiredAtomSite)
+    if (!block.has_tag(std::string("_atom_site.") + column)) missing.push_back(std::string("_atom_site.") + column);
+  return missing;
+}
+
+bool has_atoms(const gemmi::Structure& st) {
+  for (const gemmi::Model& m : st.models)
+    for (const gemmi::Chain& c : m.chains)
+      for (const gemmi::Residue& r : c.residues)
+        if (!r.atoms.empty()) return true;
+  return false;
+}
+
+// `old_columns`: a PDB file whose columns 73-80 are not read.
+// *local_plddt: whether an mmCIF file has per-residue model quality
+// (ModelCIF's _ma_qa_metric_local, as AlphaFold DB's files).
+gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const std::string& name, bool old_columns,
+                                  bool* local_plddt, UnknownElements& unknown) {
+  if (format == Format::Pdb) check_pdb_records(text, name, old_columns, unknown);
+  gemmi::Structure st;
+  std::vector<std::string> missing;
+  try {
+    if (format == Format::Pdb) {
+      gemmi::PdbReadOptions pdb_options;
+      if (old_columns) pdb_options.max_line_length = 72;
+      st = gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_options);
+    } else {
+      gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
+      check_atom_site(doc.blocks.at(0), text, name, unknown);
+      st = gemmi::make_structure(doc);
+      *local_plddt = doc.blocks.at(0).find_mmcif_category("_ma_qa_metric_local.").ok();
+      if (!has_atoms(st)) missing = missing_atom_site_columns(doc.blocks.at(0));
+    }
+    // Polymer, water or neither, where the file does not say (PDB files
+    // without TER records).
+    gemmi::add_entity_types(st, /*overwrite=*/false);
+  } catch (const std::exception& e) {
+    throw StructureError(one_line(e.what(), name));
+  }
+  if (!missing.empty()) fail(name, "mmCIF _atom_site lacks column(s) " + join(missing, missing.size()));
+  if (!has_atoms(st)) fail(name, "no atoms in the file");
+  return st;
+}
+
+// ---------------------------------------------------------------- selection
+
+bool is_hydrogen(const gemmi::Atom& a) { return a.element == gemmi::El::H || a.element == gemmi::El::D; }
+
+bool is_water(const gemmi::Residue& r) { return r.entity_type == gemmi::EntityType::Water || r.is_water(); }
+
+bool is_polymer(const gemmi::Residue& r) { return r.entity_type == gemmi::EntityType::Polymer; }
+
+// Whether any residue of the chain comes from ATOM records.
+bool has_atom_records(const gemmi::Chain& chain) {
+  return std::any_of(chain.residues.begin(), chain.residues.end(),
+                     [](const gemmi::Residue& r) { return r.het_flag == 'A'; });
+}
+
+// A ligand bound to the receptor, as the ligand-site datasets (PDBbind,
+// COACH420/P2Rank) count it: not water and not part of the receptor's
+// polymer. gemmi calls every residue of a polymer chain "polymer", so HETATM
+// residues need a closer look: a chain of HETATM records only is a peptide
+// or an inhibitor given its own chain, and a HETATM residue that gemmi's
+// tables do not know as a modified amino acid or nucleotide is a ligand
+// covalently bound to the chain. Modified residues (MSE, SEP, ...) stay.
+bool is_ligand(const gemmi::Residue& r, bool chain_has_atom_records) {
+  if (!is_polymer(r)) return true;
+  if (r.het_flag != 'H') return false;
+  if (!chain_has_atom_records) return true;
+  const gemmi::ResidueInfo info = gemmi::find_tabulated_residue(r.name);
+  return !(info.is_amino_acid() || info.is_nucleic_acid());
+}
+
+char no_blank(char c) { return c == ' ' ? '\0' : c; }
+
+int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid.num : 0; }
+
+// The altloc kept for a group of residues with one sequence number: the
+// highest mean occupancy, ties to the smallest letter (not the first in the
+// file: the choice must not depend on the order of the records); '\0' if
+// none.
+char chosen_altloc(gemmi::Span<const gemmi::Residue> group) {
+  struct Conformer {
+    char altloc;
+    double occupancy = 0;
+    std::size_t atoms = 0;
+  };
+  std::vector<Conformer> seen;  // in order of first appearance
+  for (const gemmi::Residue& r : group)
+    for (const gemmi::Atom& a : r.atoms) {
+      if (!a.altloc) continue;
+      auto it = std::find_if(seen.begin(), seen.end(), [&](const Conformer& c) { return c.altloc == a.altloc; });
+      if (it == seen.end()) it = seen.insert(seen.end(), Conformer{a.altloc});
+      it->occupancy += a.occ;
+      ++it->atoms;
+    }
+  const Conformer* best = nullptr;
+  for (const Conformer& c : seen)  // means compared without dividing: a/n > b/m as a*m > b*n
+    if (!best || c.occupancy * double(best->atoms) > best->occupancy * double(c.atoms) ||
+        (c.occupancy * double(best->atoms) == best->occupancy * double(c.atoms) && c.altloc < best->altloc))
+      best = &c;
+  return best ? best->altloc : '\0';
+}
+
+// Which atoms of a residue the altloc selection keeps: those without an
+// altloc, those of the chosen one, and for each atom name without an atom in
+// the chosen one, that name's best other atom: the highest occupancy, ties
+// to the smallest altloc, then position and serial (not the first in the
+// file). One pass with a table by name: linear in the atoms (a residue may
+// hold tens of thousands).
+std::vector<bool> altloc_keep(const gemmi::Residue& r, char chosen) {
+  const auto& atoms = r.atoms;
+  constexpr std::size_t kNone = std::size_t(-1);
+  struct Name {
+    bool in_chosen = false;
+    std::size_t best = kNone;  // the best atom in another altloc
+  };
+  const auto rank = [](const gemmi::Atom& a) {
+    return std::make_tuple(-a.occ, a.altloc, a.pos.x, a.pos.y, a.pos.z, a.serial);
+  };
+  std::unordered_map<std::string_view, Name> names;
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    if (!atoms[i].altloc) continue;
+    Name& n = names[atoms[i].name];
+    if (atoms[i].altloc == chosen)
+      n.in_chosen = true;
+    else if (n.best == kNone || rank(atoms[i]) < rank(atoms[n.best]))
+      n.best = i;
+  }
+  std::vector<bool> keep(atoms.size(), true);
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    if (!atoms[i].altloc || atoms[i].altloc == chosen) continue;
+    const Name& n = names.at(atoms[i].name);
+    keep[i] = !n.in_chosen && n.best == i;
+  }
+  return keep;
+}
+
+// A residue of a microheterogeneity group made only of other conformers.
+bool only_other_conformers(const gemmi::Residue& r, char chosen) {
+  return std::all_of(r.atoms.begin(), r.atoms.end(),
+                     [&](const gemmi::Atom& a) { return a.altloc && a.altloc != chosen; });
+}
+
+// "CA of GLY A16", for messages.
+std::string describe(const Atom& a) {
+  return a.name + " of " + a.residue_name + " " + a.chain + std::to_string(a.seq_num);
+}
+
+// The canonical order of atoms: by chain, residue number, insertion code,
+// residue name, atom name, altloc, then position, serial and the remaining
+// fields, so that atoms alike in identity (duplicate names) are ordered too
+// and only atoms equal in every field tie. Structure::atoms are kept in it
+// (per kind, see select), so that every result computed from them is a
+// function of the set of atoms, not of the order of the records.
+auto canonical_key(const Atom& a) {
+  return std::tie(a.chain, a.seq_num, a.icode, a.residue_name, a.name, a.altloc, a.position.x, a.position.y,
+                  a.position.z, a.serial, a.element, a.occupancy, a.b_factor, a.hetero);
+}
+
+bool canonical_less(const Atom& a, const Atom& b) { return canonical_key(a) < canonical_key(b); }
+
+// Sorts atoms into the canonical order. A file lists a residue's atoms
+// together, residues mostly in order: std::sort on the atoms themselves
+// moved four strings per swap and, on that nearly sorted input, fell back
+// to heapsort (0.8 G instructions on 150,000 atoms). Instead the indices are
+// sorted by the residue (chain's rank among the distinct chains, number,
+// insertion code), each residue's by canonical_less, and the atoms moved
+// once. Only atoms equal in every field tie, so the order is the same.
+void canonical_sort(std::vector<Atom>& atoms) {
+  struct Residue {
+    std::uint32_t chain;
+    int seq_num;
+    char icode;
+    std::uint32_t atom;
+  };
+  std::map<std::string, std::uint32_t> chains;
+  for (const Atom& a : atoms) chains.emplace(a.chain, 0);
+  std::uint32_t rank = 0;
+  for (auto& [chain, r] : chains) r = rank++;
+  std::vector<Residue> order;
+  order.reserve(atoms.size());
+  const std::uint32_t* chain = nullptr;
+  for (std::uint32_t i = 0; i < atoms.size(); ++i) {
+    const Atom& a = atoms[i];
+    if (i == 0 || a.chain != atoms[i - 1].chain) chain = &chains.find(a.chain)->second;
+    order.push_back({*chain, a.seq_num, a.icode, i});
+  }
+  auto residue = [](const Residue& r) { return std::tie(r.chain, r.seq_num, r.icode); };
+  std::sort(order.begin(), order.end(), [&](const Residue& a, const Residue& b) {
+    return std::tie(a.chain, a.seq_num, a.icode, a.atom) < std::tie(b.chain, b.seq_num, b.icode, b.atom);
+  });
+  for (auto begin = order.begin(); begin != order.end();) {
+    const auto end = std::find_if(begin, order.end(), [&](const Residue& r) { return residue(r) != residue(*begin); });
+    std::sort(begin, end, [&](const Residue& a, const Residue& b) { return canonical_less(atoms[a.atom], atoms[b.atom]); });
+    begin = end;
+  }
+  std::vector<Atom> sorted;
+  sorted.reserve(atoms.size());
+  for (const Residue& r : order) sorted.push_back(std::move(atoms[r.atom]));
+  atoms = std::move(sorted);
+}
+
+// Radii per atom, with one warning per element that gets the default;
+// warnings count only the atoms kept (`kept`), the ones a caller uses.
+class RadiusAssigner {
+public:
+  double operator()(const Atom& a, bool kept) {
+    const AtomRadius r = atom_radius(a.residue_name, a.name, a.element);
+    kept_x_ += kept && a.element == "X";
+    if (kept && r.source == RadiusSource::Default) {
+      Unknown& u = unknown_[a.element];
+      if (u.atoms++ == 0 || canonical_less(a, u.first)) u.first = a;
+    }
+    return r.value;
+  }
+  // `symbols`: what the file wrote where gemmi read X, with lines.
+  void add_warnings(std::vector<std::string>& warnings, const UnknownElements& symbols) const {
+    // "'QQ', 'ZZ'" and "on line 5, 9; ": the symbols gemmi read as X.
+    std::string written, lines;
+    for (const auto& [symbol, line] : symbols) {
+      written += (written.empty() ? "'" : ", '") + symbol + "'";
+      lines += (lines.empty() ? "on line " : ", ") + std::to_string(line);
+    }
+    if (!symbols.empty() && kept_x_ > 0 && !unknown_.count("X"))  // each got a radius from its name
+      warnings.push_back("unknown element " + written + " (" + lines + ") read as X; radii from the atom names");
+    for (const auto& [element, u] : unknown_) {
+      std::string what = "'" + element + "'", where;
+      if (element == "X" && !symbols.empty()) {
+        what = written;
+        where = lines + "; ";
+      }
+      std::ostringstream s;
+      s << u.atoms << " atom" << (u.atoms == 1 ? "" : "s") << " of unknown element " << what << " (" << where
+        << "first: atom " << describe(u.first) << ") given radius " << kDefaultRadius << " A";
+      warnings.push_back(s.str());
+    }
+  }
+
+private:
+  struct Unknown {
+    std::size_t atoms = 0;
+    Atom first;  // in the canonical order
+  };
+  std::map<std::string, Unknown> unknown_;  // ordered: deterministic warnings
+  std::size_t kept_x_ = 0;                  // kept atoms of element X, whatever their radius
+};
+
+Atom make_atom(const gemmi::Atom& a, const gemmi::Residue& r, const gemmi::Chain& c) {
+  Atom atom;
+  atom.serial = a.serial;
+  atom.name = a.name;
+  atom.element = a.element.name();
+  atom.altloc = a.altloc;
+  atom.occupancy = a.occ;
+  atom.b_factor = a.b_iso;
+  atom.residue_name = r.name;
+  atom.seq_num = seq_num(r);
+  atom.icode = no_blank(r.seqid.icode);
+  atom.chain = c.name;
+  atom.hetero = r.het_flag == 'H';
+  atom.position = {a.pos.x, a.pos.y, a.pos.z};
+  return atom;
+}
+
+int model_number(const gemmi::Model& m) {
+  int n = 0;
+  std::from_chars(m.name.data(), m.name.data() + m.name.size(), n);
+  return n;
+}
+
+const gemmi::Model& select_model(const gemmi::Structure& st, int model, const std::string& name) {
+  if (model < 0) fail(name, "invalid model number " + std::to_string(model));
+  if (model == 0) return st.models.front();
+  for (const gemmi::Model& m : st.models)
+    if (model_number(m) == model) return m;
+  std::vector<std::string> names;
+  for (const gemmi::Model& m : st.models) names.push_back(m.name);
+  fail(name, "no model " + std::to_string(model) + " (models: " + join(names, 10) + ")");
+}
+
+void check_chains(const gemmi::Model& model, const std::vector<std::string>& chains, const std::string& name) {
+  for (const std::string& wanted : chains)
+    if (!model.find_chain(wanted)) {
+      std::vector<std::string> names;
+      for (const gemmi::Chain& c : model.chains)
+        if (std::find(names.begin(), names.end(), c.name) == names.end()) names.push_back(c.name);
+      fail(name, "no chain '" + wanted + "' in model " + model.name + " (chains: " + join(names, 30) + ")");
+    }
+}
+
+std::string dropped_list(const StructureReport& r) {
+  std::vector<std::string> parts;
+  const auto add = [&](std::size_t n, const char* what) {
+    if (n) parts.push_back(std::to_string(n) + " " + what);
+  };
+  add(r.dropped_chain, "other-chain");
+  add(r.dropped_altloc, "altloc");
+  add(r.dropped_water, "water");
+  add(r.dropped_hetero, "hetero");
+  add(r.dropped_hydrogen, "hydrogen");
+  add(r.dropped_plddt, "low-pLDDT");
+  return parts.empty() ? "none" : join(parts, parts.size());
+}
+
+double mean_b_factor(const gemmi::Residue& r) {
+  double sum = 0;
+  for (const gemmi::Atom& a : r.atoms) sum += a.b_iso;
+  return r.atoms.empty() ? 0 : sum / double(r.atoms.size());
+}
+
+Structure select(const gemmi::Structure& st, const StructureOptions& options, const std::string& name,
+                 bool predicted, const UnknownElements& unknown) {
+  const gemmi::Model& model = select_model(st, options.model, name);
+  check_chains(model, options.chains, name);
+  Structure out;
+  StructureReport& report = out.report;
+  report.models = st.models.size();
+  report.model = model_number(model);
+  report.model_index = std::size_t(&model - st.models.data());
+  report.predicted = predicted;
+  const bool by_plddt = predicted && options.min_plddt > 0;
+  if (options.min_plddt > 0 && !predicted)
+    report.warnings.push_back("not a predicted model (no pLDDT): --min-plddt ignored");
+  RadiusAssigner radius;
+  const auto wanted_chain = [&](const std::string& chain) {
+    return options.chains.empty() ||
+           std::find(options.chains.begin(), options.chains.end(), chain) != options.chains.end();
+  };
+  std::vector<Atom> kept_atoms[3];  // polymer, hetero, water
+  for (const gemmi::Chain& chain : model.chains) {
+    const auto& residues = chain.residues;
+    const bool chain_has_atom_records = has_atom_records(chain);
+    for (std::size_t g = 0; g < residues.size();) {
+      // A group: consecutive residues with one sequence number.
+      std::size_t end = g + 1;
+      while (end < residues.size() && residues[end].seqid == residues[g].seqid) ++end;
+      const gemmi::Span<const gemmi::Residue> group(residues.data() + g, end - g);
+      g = end;
+      const char chosen = chosen_altloc(group);
+      for (const gemmi::Residue& res : group) {
+        report.atoms_in_model += res.atoms.size();
+        if (!wanted_chain(chain.name)) {
+          report.dropped_chain += res.atoms.size();
+          continue;
+        }
+        if (group.size() > 1 && only_other_conformers(res, chosen)) {
+          report.dropped_altloc += res.atoms.size();
+          continue;
+        }
+        const std::vector<bool> keep = altloc_keep(res, chosen);
+        const bool water = is_water(res);
+        const bool hetero = !water && is_ligand(res, chain_has_atom_records);
+        const bool keep_group = hetero && keeps_hetero(options, res.name);
+        const bool low_plddt = by_plddt && mean_b_factor(res) < options.min_plddt;
+        HeteroGroup ligand{res.name, chain.name, seq_num(res), no_blank(res.seqid.icode), {}};
+        for (std::size_t i = 0; i < res.atoms.size(); ++i) {
+          const gemmi::Atom& a = res.atoms[i];
+          if (!keep[i]) {
+            ++report.dropped_altloc;
+            continue;
+          }
+          const bool in_ligand = hetero && !is_hydrogen(a);
+          bool kept = false;
+          if (water && !options.keep_waters)
+            ++report.dropped_water;
+          else if (hetero && !keep_group)
+            ++report.dropped_hetero;
+          else if (is_hydrogen(a) && !options.keep_hydrogens)
+            ++report.dropped_hydrogen;
+          else if (low_plddt)
+            ++report.dropped_plddt;
+          else
+            kept = true;
+          if (!kept && !in_ligand) continue;
+          Atom atom = make_atom(a, res, chain);
+          atom.radius = radius(atom, kept);
+          if (in_ligand) ligand.atoms.push_back(atom);
+          ligand.kept = ligand.kept || (kept && in_ligand);
+          if (kept) kept_atoms[water ? 2 : hetero ? 1 : 0].push_back(std::move(atom));
+        }
+        if (!ligand.atoms.empty()) out.hetero_groups.push_back(std::move(ligand));
+      }
+    }
+  }
+  // The polymer first, then the kept hetero groups, then waters: a copy of
+  // the atoms searched followed by the ligands (structure_copy) reads back
+  // in the same order.
+  for (std::vector<Atom>& atoms : kept_atoms) {
+    canonical_sort(atoms);
+    out.atoms.insert(out.atoms.end(), std::make_move_iterator(atoms.begin()), std::make_move_iterator(atoms.end()));
+  }
+  for (HeteroGroup& g : out.hetero_groups) std::sort(g.atoms.begin(), g.atoms.end(), canonical_less);
+  std::sort(out.hetero_groups.begin(), out.hetero_groups.end(), [](const HeteroGroup& a, const HeteroGroup& b) {
+    return canonical_less(a.atoms.front(), b.atoms.front());
+  });
+  report.kept = out.atoms.size();
+  report.hetero_groups = out.hetero_groups.size();
+  radius.add_warnings(report.warnings, unknown);
+  if (out.atoms.empty())
+    fail(name, "no atoms left after the selection (model " + model.name + " has " +
+                   std::to_string(report.atoms_in_model) + " atoms; dropped: " + dropped_list(report) + ")");
+  if (out.atoms.size() < options.min_atoms)
+    fail(name, "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
+                   " after the selection, at least " + std::to_string(options.min_atoms) + " are needed");
+  return out;
+}
+
+[[noreturn]] void too_large(const std::string& name, std::uintmax_t bytes, std::size_t max_mib) {
+  fail(name, "is " + std::to_string(bytes >> 20) + " MiB, more than the limit for a structure file of " +
+                 std::to_string(max_mib) + " MiB (--max-input-mb raises it)",
+       alpha::ErrorKind::LimitExceeded);
+}
+
+}  // namespace
+
+Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options) {
+  if (data.empty()) fail(name, "file is empty");
+  std::string unzipped;
+  const bool gzipped = is_gzip(data);
+  if (gzipped) {
+    try {
+      unzipped = gunzip(data, name, options.max_input_mib << 20);
+    } catch (const alpha::Error& e) {
+      throw StructureError(e.what(), e.kind());
+    }
+    data = unzipped;
+  } else if (ends_with_ci(name, ".gz")) {
+    fail(name, "not gzip data (no gzip header)");
+  }
+  if (data.size() > options.max_input_mib << 20) too_large(name, data.size(), options.max_input_mib);
+  if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
+  if (const std::optional<std::size_t> line = cif_without_data_block(data))
+    fail(name, "line " + std::to_string(*line) + ": mmCIF without a data_ block (its first line must be data_NAME)");
+  const Format format = detect_format(data, name);
+  const std::optional<OldColumns> old = format == Format::Pdb ? old_format_columns(data) : std::nullopt;
+  bool local_plddt = false;
+  UnknownElements unknown;
+  const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value(), &local_plddt, unknown);
+  const bool af_name = std::filesystem::path(name).filename().string().rfind("AF-", 0) == 0;
+  Structure out = select(st, options, name, local_plddt || af_name, unknown);
+  if (old)
+    out.report.warnings.insert(out.report.warnings.begin(),
+                               "columns 73-80 hold an old-format id code and line number (line " +
+                                   std::to_string(old->line_number) + ": '" + old->text +
+                                   "'): ignored, elements taken from the atom names");
+  out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
+  out.report.gzipped = gzipped;
+  return out;
+}
+
+Structure read_structure(const std::string& path, const StructureOptions& options) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  if (!ec && size > options.max_input_mib << 20) too_large(path, size, options.max_input_mib);  // not even read
+  std::string text;
+  try {
+    text = alpha::read_input_file(path);
+  } catch (const alpha::Error& e) {
+    throw StructureError(e.what(), e.kind());
+  }
+  return parse_structure(text, path, options);
+}
+
+bool keeps_hetero(const StructureOptions& options, const std::string& residue_name) {
+  const auto named = [&](const auto& codes) {
+    return std::find(std::begin(codes), std::end(codes), residue_name) != std::end(codes);
+  };
+  return options.keep_hetero || named(options.keep_hetero_codes) || (options.keep_cofactors && named(kCofactors));
+}
+
+bool is_structure_file(std::string_view path) {
+  if (ends_with_ci(path, ".gz")) path.remove_suffix(3);
+  for (const char* ext : {".pdb", ".ent", ".cif", ".mmcif"})
+    if (ends_with_ci(path, ext)) return true;
+  return false;
+}
+
+std::string summary(const StructureReport& r) {
+  std::ostringstream s;
+  s << r.format << (r.gzipped ? " (gzip)" : "") << ", model " << r.model;
+  if (r.models > 1) s << " of " << r.models;
+  s << ": kept " << r.kept << " of " << r.atoms_in_model << " atoms; dropped: " << dropped_list(r) << "; "
+    << r.hetero_groups << " hetero group" << (r.hetero_groups == 1 ? "" : "s");
+  return s.str();
+}
+
+}  // namespace molecule
