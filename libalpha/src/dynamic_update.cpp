@@ -5,18 +5,19 @@
 // repair that ends locally regular everywhere, with every point that is no
 // vertex non-conflicting, is the fresh build's. A move: (1) with the new
 // values, check the cells that hold a moved vertex (orientation, local
-// regularity, hull convexity); (2) give the moved vertices of what fails
-// their old values back, and of what then fails around them, until the
-// cells are regular for these mixed values; (3) take those vertices out
-// (with the mixed values, which are the new ones for every vertex left);
-// (4) insert them at their new places with the construction's own
-// insertion, and test every hidden point again. Taking a vertex out
-// retriangulates its star from the regular triangulation of the star's
-// boundary vertices (and, on removal, the hidden points nearby), with the
-// same predicates and perturbation (indices in the same order). Whatever
-// this cannot do locally (duplicates made or split, a star no 3D
-// triangulation fills, more than 1/8 of the points to take out: then a
-// rebuild costs less) is built afresh: slower, never different.
+// regularity, hull convexity); (2) give a moved vertex of each failing one
+// its old values back, until nothing fails with these mixed values (when
+// many points move, a facet between two positive finite cells is flipped
+// instead, 2-3 or 3-2, until all are regular); (3) take the reverted
+// vertices out (with the mixed values, the new ones for every vertex left):
+// the cells holding them are refilled from the regular triangulation of
+// their other vertices (and, on removal, the hidden points nearby), with
+// the same predicates and perturbation (indices in the same order); (4)
+// insert them at their new places with the construction's own insertion,
+// and test every hidden point again. Whatever this cannot do locally
+// (duplicates made or split, a region no 3D triangulation fills, a facet
+// no flip mends, more than 1/8 of the points to take out: then a rebuild
+// costs less) is built afresh: slower, never different.
 #include <algorithm>
 #include <bit>
 #include <numeric>
@@ -91,6 +92,9 @@ public:
         if (v != kInfinite && is_moved_[v]) return true;
       return false;
     };
+    // Many moved points: most vertices touch a failing facet (a share of
+    // all of them), so those of positive cells are flipped instead.
+    flips_ = moved.size() > n / kMaxShare;
     Kernel now = t_.kernel();
     for (Index c = 0; c < t_.cells_.size(); ++c)
       if (touched(c)) check(now, c, [&](Index other) { return other < c || !touched(other); });
@@ -111,11 +115,11 @@ public:
       for (Index c : star) check(mixed, c, [](Index) { return true; });
     }
     if (stuck_ || pending_.size() > n / kMaxShare) return false;
+    if (flips_ && !flip_all(mixed)) return false;
     // (3) Taking them out leaves the regular triangulation of the other
     // vertices at their new values; (4) they go in at their new places, and
     // every hidden point is tested again.
-    for (Index v : pending_)
-      if (!take_out(v)) return false;
+    if (!take_out(pending_)) return false;
     std::vector<Index> again;
     for (Index i = 0; i < n; ++i)
       if (removed_[i] || t_.status_[i] == PointStatus::hidden) again.push_back(i);
@@ -134,8 +138,10 @@ public:
     for (Index i : ids) removed_[i] = 1;  // before hidden_: none of them comes back
     for (Index i = 0; i < n; ++i)
       if (t_.status_[i] == PointStatus::hidden && !removed_[i]) hidden_.push_back(i);
+    std::vector<Index> vertices;
     for (Index v : ids)
-      if (t_.status_[v] == PointStatus::vertex && !take_out(v)) return false;
+      if (t_.status_[v] == PointStatus::vertex) vertices.push_back(v);
+    if (!take_out(vertices)) return false;
     for (Index v : ids) t_.status_[v] = PointStatus::hidden;
     return true;
   }
@@ -164,7 +170,9 @@ private:
   std::vector<double> before_w_;
   std::vector<Vec3> at_;  // the values the cells are regular for, which take_out uses
   std::vector<double> at_w_;
-  bool stuck_ = false;  // a failing cell without a moved vertex: cannot happen, yet never left as is
+  bool stuck_ = false;
+  bool flips_ = false;  // regularity restored by flips where cells keep their orientation
+  std::vector<Index> flip_queue_;  // cells that may have a facet to flip  // a failing cell without a moved vertex: cannot happen, yet never left as is
   std::vector<char> is_moved_, removed_, reverted_, pending_mark_;
   std::vector<Index> hidden_, pending_, free_;
   std::vector<std::uint32_t> cell_stamp_;  // kDead, else the last take_out that saw it
@@ -197,18 +205,138 @@ private:
       const bool conflict = inf >= 0 ? kernel.hull_conflict(cell.v[kFacet[inf][0]], cell.v[kFacet[inf][1]],
                                                           cell.v[kFacet[inf][2]], far)
                                      : kernel.power_conflict(cell.v, far);
-      if (conflict) take_moved(cell.v, far);
+      if (!conflict) continue;
+      if (flips_ && inf < 0 && !bad) flip_queue_.push_back(c);  // both cells finite: a flip may mend it
+      else take_moved(cell.v, far);
     }
   }
+
+  // Flips the facets that fail local regularity (with `kernel`'s values)
+  // until none does: 2-3 where the two cells' union is convex, 3-2 around
+  // an edge of degree 3. Each flip lowers the lifted surface, so this ends;
+  // false when some facets flip no way (then the caller rebuilds).
+  bool flip_all(Kernel& kernel) {
+    std::vector<Index> stuck;
+    for (bool flipped = true; flipped;) {
+      flipped = false;
+      while (!flip_queue_.empty()) {
+        const Index c = flip_queue_.back();
+        flip_queue_.pop_back();
+        if (cell_stamp_[c] == kDead || t_.infinite_position(c) >= 0) continue;
+        bool failing = false, done = false;
+        for (int i = 0; i < 4 && !done; ++i) {
+          const Index far = t_.cells_[t_.cells_[c].n[i]].v[t_.mirror_index(c, i)];
+          if (far == kInfinite || !kernel.power_conflict(t_.cells_[c].v, far)) continue;
+          failing = true;
+          done = flip(kernel, c, i);
+        }
+        flipped |= done;
+        if (failing && !done) stuck.push_back(c);
+      }
+      flip_queue_.swap(stuck);  // again, once others have flipped
+    }
+    return flip_queue_.empty();
+  }
+
+  bool flip(Kernel& kernel, Index c, int i) {
+    auto& cells = t_.cells_;
+    const Index nb = cells[c].n[i], e = cells[nb].v[t_.mirror_index(c, i)];
+    const auto& cv = cells[c].v;
+    const Index a = cv[kFacet[i][0]], b = cv[kFacet[i][1]], cc = cv[kFacet[i][2]], d = cv[i];
+    // Where the line de crosses the plane abc, against each edge (< 0: inside).
+    const int s_ab = kernel.orient3d(a, b, d, e), s_bc = kernel.orient3d(b, cc, d, e), s_ca = kernel.orient3d(cc, a, d, e);
+    if (s_ab < 0 && s_bc < 0 && s_ca < 0) {
+      const Index old[] = {c, nb};
+      const std::array<Index, 4> made[] = {{a, b, e, d}, {b, cc, e, d}, {cc, a, e, d}};
+      return replace(old, made);
+    }
+    // Outside across one edge xy only: the third cell xyde around it.
+    Index x, y, z;
+    if (s_ab > 0 && s_bc < 0 && s_ca < 0) x = a, y = b, z = cc;
+    else if (s_bc > 0 && s_ab < 0 && s_ca < 0) x = b, y = cc, z = a;
+    else if (s_ca > 0 && s_ab < 0 && s_bc < 0) x = cc, y = a, z = b;
+    else return false;
+    const Index third = cells[c].n[t_.index_of(c, z)];
+    if (t_.index_of(third, e) < 0 || cells[nb].n[t_.index_of(nb, z)] != third) return false;  // degree above 3
+    std::array<Index, 4> made[2];
+    for (int k = 0; k < 2; ++k) {
+      const Index w = k ? y : x;
+      const int o = kernel.orient3d(z, d, e, w);
+      if (o == 0) return false;
+      made[k] = o > 0 ? std::array<Index, 4>{z, d, e, w} : std::array<Index, 4>{d, z, e, w};
+    }
+    const Index old[] = {c, nb, third};
+    return replace(old, made);
+  }
+
+  // Replaces the cells `old` by cells with the vertices `made` (positively
+  // oriented, the same region), joined to each other and to old's outside.
+  bool replace(std::span<const Index> old, std::span<const std::array<Index, 4>> made) {
+    auto& cells = t_.cells_;
+    struct Outside {
+      std::array<Index, 3> key;
+      Index cell;
+      int mirror;
+    };
+    const auto key_of = [](const std::array<Index, 4>& v, int k) {
+      std::array<Index, 3> f{v[kFacet[k][0]], v[kFacet[k][1]], v[kFacet[k][2]]};
+      std::sort(f.begin(), f.end());
+      return f;
+    };
+    std::array<Outside, 12> outside;  // 2 or 3 cells, 4 facets each
+    std::size_t outsides = 0;
+    for (Index o : old)
+      for (int k = 0; k < 4; ++k)
+        if (const Index nb = cells[o].n[k]; std::find(old.begin(), old.end(), nb) == old.end())
+          outside[outsides++] = {key_of(cells[o].v, k), nb, t_.mirror_index(o, k)};
+    std::array<Index, 3> ids;
+    std::copy(old.begin(), old.end(), ids.begin());
+    for (Index o : old) cell_stamp_[o] = kDead;
+    for (std::size_t j = old.size(); j < made.size(); ++j) {
+      if (!free_.empty()) {
+        ids[j] = free_.back();
+        free_.pop_back();
+      } else {
+        ids[j] = Index(cells.size());
+        cells.push_back({});
+        cell_stamp_.push_back(0);
+      }
+    }
+    for (std::size_t j = made.size(); j < old.size(); ++j) free_.push_back(ids[j]);
+    for (std::size_t j = 0; j < made.size(); ++j) {
+      cells[ids[j]].v = made[j];
+      cell_stamp_[ids[j]] = 0;
+      flip_queue_.push_back(ids[j]);
+      for (Index u : made[j]) t_.vertex_cell_[u] = ids[j];
+    }
+    for (std::size_t j = 0; j < made.size(); ++j)
+      for (int k = 0; k < 4; ++k) {
+        const auto key = key_of(made[j], k);
+        Index nb = kNone;
+        for (std::size_t l = 0; l < made.size() && nb == kNone; ++l)
+          for (int m = 0; m < 4; ++m)
+            if (l != j && key_of(made[l], m) == key) nb = ids[l];
+        if (nb == kNone)
+          for (std::size_t o = 0; o < outsides; ++o)
+            if (outside[o].key == key) nb = outside[o].cell, cells[nb].n[outside[o].mirror] = ids[j];
+        cells[ids[j]].n[k] = nb;
+      }
+    return true;
+  }
+  // One moved vertex of a failing cell (or facet) goes back at a time: a
+  // vertex already on its way back is checked around again, else the first
+  // still at its new values goes. None left: cannot happen (all old values
+  // pass), but is never left as is.
   void take_moved(const std::array<Index, 4>& v, Index far) {
     if (pending_mark_.empty()) pending_mark_.assign(t_.points_.size(), 0);
-    bool any = false;  // a moved vertex still at its new values
+    Index next = kNone;
     for (Index u : {v[0], v[1], v[2], v[3], far})
-      if (u != kInfinite && is_moved_[u]) {
-        any |= !reverted_[u];
-        if (!pending_mark_[u]) pending_mark_[u] = 1, pending_.push_back(u);
+      if (u != kInfinite && is_moved_[u] && !reverted_[u]) {
+        if (pending_mark_[u]) return;
+        if (next == kNone) next = u;
       }
-    stuck_ |= !any;
+    if (next == kNone) stuck_ = true;
+    else pending_mark_[next] = 1, pending_.push_back(next);
   }
 
   // The cells holding vertex v.
@@ -221,40 +349,50 @@ private:
         if (cell_stamp_[nb] != stamp_ && t_.index_of(nb, v) >= 0) cell_stamp_[nb] = stamp_, star.push_back(nb);
   }
 
-  // Takes vertex v out with the values at_: its star becomes the cells of
-  // the regular triangulation of the star's boundary vertices (and the
-  // hidden points within their box) that lie inside the star. Cells of
-  // Reg(P \ v) inside the star are empty for any subset of P \ v holding
-  // their vertices, so they are cells of that triangulation too.
-  bool take_out(Index v) {
+  // Takes the vertices vs out with the values at_: the cells holding them
+  // become the cells of the regular triangulation of their other vertices
+  // (and the hidden points within their box) that lie inside that region.
+  // Cells of Reg(P \ vs) inside the region are empty for any subset of
+  // P \ vs holding their vertices, so they are cells of that triangulation too.
+  bool take_out(const std::vector<Index>& vs) {
     auto& cells = t_.cells_;
-    std::vector<Index> star;
-    star_of(v, star);
-    // The boundary facets, as the star sees them (v on their positive side).
+    if (vs.empty()) return true;
+    // The region: every cell holding one of them.
+    std::vector<Index> stars, star, region;
+    for (Index v : vs) {
+      removed_[v] = 1;
+      star_of(v, star);
+      stars.insert(stars.end(), star.begin(), star.end());
+    }
+    const std::uint32_t in = ++stamp_;
+    for (Index c : stars)
+      if (cell_stamp_[c] != in) cell_stamp_[c] = in, region.push_back(c);
+    // The boundary facets, as the region sees them (from inside).
     struct Boundary {
       FacetKey key;
       Index outside;
       int mirror;
-      Index cell = kNone;  // the sub-triangulation's cell on v's side
+      Index cell = kNone;  // the sub-triangulation's cell on the region's side
       int facet = 0;
     };
     std::vector<Boundary> boundary;
     std::vector<Index> ids;  // the sub-triangulation's points, as input ids
-    for (Index c : star) {
-      const int iv = t_.index_of(c, v);
-      const auto& f = kFacet[iv];
+    Vec3 lo = at_[vs[0]], hi = lo;
+    for (Index c : region) {
       const auto& cv = cells[c].v;
-      boundary.push_back({facet_key(cv[f[0]], cv[f[1]], cv[f[2]]), cells[c].n[iv], t_.mirror_index(c, iv)});
-      for (int k : f)
-        if (cv[k] != kInfinite) ids.push_back(cv[k]);
-    }
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    Vec3 lo = at_[v], hi = lo;
-    for (Index i : ids) {
-      const Vec3& p = at_[i];
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+      for (int k = 0; k < 4; ++k) {
+        const Index u = cv[k];
+        if (u != kInfinite) {
+          const Vec3& p = at_[u];
+          lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+          hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+          if (!removed_[u]) ids.push_back(u);
+        }
+        const Index nb = cells[c].n[k];
+        if (cell_stamp_[nb] == in) continue;
+        const auto& f = kFacet[k];
+        boundary.push_back({facet_key(cv[f[0]], cv[f[1]], cv[f[2]]), nb, t_.mirror_index(c, k)});
+      }
     }
     for (Index h : hidden_) {
       const Vec3& p = at_[h];
@@ -271,7 +409,7 @@ private:
     }
     const auto global = [&](Index x) { return x == kInfinite ? kInfinite : ids[x]; };
     {
-      // Match each boundary facet with the sub cell on v's side.
+      // Match each boundary facet with the sub cell on the region's side.
       std::sort(boundary.begin(), boundary.end(), [](const Boundary& a, const Boundary& b) { return a.key < b.key; });
       std::vector<std::uint8_t> walls(sub->num_cells(), 0);  // bit k: facet k is a boundary facet
       for (Index s = 0; s < sub->num_cells(); ++s)
@@ -285,7 +423,7 @@ private:
           it->cell = s, it->facet = k;
           walls[s] |= std::uint8_t(1u << k);
         }
-      // The sub cells inside the star: from the boundary, never across it.
+      // The sub cells inside the region: from the boundary, never across it.
       std::vector<Index> inside, number(sub->num_cells(), kNone);
       for (const Boundary& b : boundary) {
         if (b.cell == kNone) return false;
@@ -296,8 +434,8 @@ private:
           const Index s = sub->cell(inside[k]).n[i];
           if (!(walls[inside[k]] >> i & 1) && number[s] == kNone) number[s] = 0, inside.push_back(s);
         }
-      // Cell ids: the star's first, then unused ones, then new ones.
-      for (Index c : star) cell_stamp_[c] = kDead, free_.push_back(c);
+      // Cell ids: the region's first, then unused ones, then new ones.
+      for (Index c : region) cell_stamp_[c] = kDead, free_.push_back(c);
       for (Index s : inside) {
         Index c;
         if (!free_.empty()) {
@@ -325,10 +463,8 @@ private:
         cells[b.outside].n[b.mirror] = number[b.cell];
       }
     }
-    removed_[v] = 1;
-    t_.status_[v] = PointStatus::hidden;
-    t_.vertex_cell_[v] = kNone;
-    ++relocated_;
+    for (Index v : vs) t_.status_[v] = PointStatus::hidden, t_.vertex_cell_[v] = kNone;
+    relocated_ += vs.size();
     return true;
   }
 
