@@ -96,17 +96,19 @@ public:
     // all of them), so those of positive cells are flipped instead.
     flips_ = moved.size() > n / kMaxShare;
     Kernel now = t_.kernel();
-    for (Index c = 0; c < t_.cells_.size(); ++c)
+    // Beyond this share taking out and inserting costs more than a rebuild
+    // (beyond a smaller one with flips, which cost too): stop as soon as it is passed.
+    limit_ = n / (flips_ ? kMaxFlipShare : kMaxShare);
+    for (Index c = 0; c < t_.cells_.size() && pending_.size() <= limit_; ++c)
       if (touched(c)) check(now, c, [&](Index other) { return other < c || !touched(other); });
-    // Beyond this share, taking out and inserting costs more than a rebuild.
-    if (pending_.size() > n / kMaxShare) return false;
+    if (pending_.size() > limit_) return false;
     // (2) The moved vertices of what failed go back to their old values,
     // and so do those of what then fails around them: the cells are
     // regular for these mixed values.
     at_ = t_.points_, at_w_ = t_.weights_;
     Kernel mixed(at_.data(), at_w_.empty() ? nullptr : at_w_.data());
     std::vector<Index> star;
-    for (std::size_t k = 0; k < pending_.size(); ++k) {
+    for (std::size_t k = 0; k < pending_.size() && pending_.size() <= limit_; ++k) {
       const Index u = pending_[k];
       at_[u] = before_[u];
       if (!at_w_.empty()) at_w_[u] = before_w_[u];
@@ -114,7 +116,7 @@ public:
       star_of(u, star);
       for (Index c : star) check(mixed, c, [](Index) { return true; });
     }
-    if (stuck_ || pending_.size() > n / kMaxShare) return false;
+    if (stuck_ || pending_.size() > limit_) return false;
     if (flips_ && !flip_all(mixed)) return false;
     // (3) Taking them out leaves the regular triangulation of the other
     // vertices at their new values; (4) they go in at their new places, and
@@ -165,6 +167,8 @@ public:
 private:
   static constexpr std::uint32_t kDead = ~0u;
   static constexpr std::size_t kMaxShare = 8;  // of the points taken out and inserted, at most 1/kMaxShare
+  static constexpr std::size_t kMaxFlipShare = 32;  // the same when flipping
+  std::size_t limit_ = 0;
   Triangulation& t_;
   std::vector<Vec3> before_;
   std::vector<double> before_w_;
