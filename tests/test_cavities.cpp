@@ -235,12 +235,15 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   for (const Cavity& c : cav.voids) check_cavity(c, false);
   for (const auto* list : {&cav.pockets, &cav.voids})
     for (std::size_t k = 1; k < list->size(); ++k) CHECK((*list)[k - 1].score >= (*list)[k].score);
-  // Sites: each pocket once and each void that holds a ligand site, best
-  // first; among equal scores pockets first, each kind in its list's order.
+  // Sites: each pocket once and each void that holds a ligand (a
+  // drug-sized one by free space, or about six heavy atoms by MS volume),
+  // best first; among equal scores pockets first, each kind in its list's
+  // order.
   std::vector<std::pair<bool, std::size_t>> expected, sites;
   for (std::size_t k = 0; k < cav.pockets.size(); ++k) expected.emplace_back(false, k);
   for (std::size_t k = 0; k < cav.voids.size(); ++k)
-    if (cav.voids[k].sa_volume >= molecule::kLigandSiteVolume) expected.emplace_back(true, k);
+    if (cav.voids[k].sa_volume >= molecule::kLigandSiteVolume || cav.voids[k].ms_volume >= molecule::kLigandVoidVolume)
+      expected.emplace_back(true, k);
   for (const molecule::Site& site : cav.sites) sites.emplace_back(site.is_void, site.index);
   std::sort(sites.begin(), sites.end());
   CHECK(sites == expected);
