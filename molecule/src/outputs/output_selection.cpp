@@ -32,7 +32,8 @@ OutputSelection parse_output_selection(const std::string& list) {
     else if (it != kItems.end())
       s.*it->second = true;
     else
-      alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels or all)");
+      alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels or all)",
+                  alpha::ErrorKind::BadInput);
     begin = end + 1;
   }
   return s;

@@ -66,7 +66,7 @@ std::vector<std::string> foreign_entries(const fs::path& dir, std::size_t max) {
 }
 
 [[noreturn]] void refuse(const std::string& name, const std::string& why) {
-  alpha::fail(name + ": " + why);
+  alpha::fail(name + ": " + why, alpha::ErrorKind::BadInput);
 }
 
 // The output directory `name` as a path (output_directory_path), checked
