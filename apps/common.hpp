@@ -22,8 +22,6 @@
 
 namespace alphapocket {
 
-// Radius of the solvent probe added to every atom radius, A (water).
-inline constexpr double kDefaultProbe = 1.4;
 // Larger probes are refused: they make nothing of interest, and the
 // areas and volumes of balls that large lose their digits.
 inline constexpr double kMaxProbe = 100;
@@ -32,7 +30,7 @@ struct InputOptions {
   std::string file;
   bool weighted = false;                 // point files: x y z r per line
   molecule::StructureOptions structure;  // structure files: which atoms
-  double probe = kDefaultProbe;          // structure files: atom i is (x_i, (r_i + probe)^2)
+  double probe = molecule::CavityOptions{}.probe;  // structure files: atom i is (x_i, (r_i + probe)^2)
   unsigned threads = 1;                  // the triangulation's (add_threads_option)
   // The options that only apply to structure files, to reject them when
   // FILE is a point file.
