@@ -17,9 +17,7 @@ extern const char* const kLigandabilityModelJson;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  alpha::fail("ligandability model: " + what, alpha::ErrorKind::BadInput);
-}
+[[noreturn]] void fail(const std::string& what) { alpha::fail("ligandability model: " + what); }
 
 // Reads the JSON a model file is: objects, arrays, strings without escapes
 // and numbers. Not nlohmann's parser: its document of a bagged model's

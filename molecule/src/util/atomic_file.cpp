@@ -27,8 +27,7 @@ fs::path directory_of(const std::string& path) {
 }
 
 [[noreturn]] void fail_to_create(const std::string& path, int err) {
-  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err),
-              alpha::ErrorKind::BadInput);
+  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err));
 }
 
 }  // namespace
@@ -64,7 +63,7 @@ TemporaryFile::TemporaryFile(const std::string& target, TemporaryPaths* temporar
     }
     if (errno != EEXIST) fail_to_create(target, errno);
   }
-  alpha::fail(target + ": cannot create a temporary file in " + dir.string(), alpha::ErrorKind::BadInput);
+  alpha::fail(target + ": cannot create a temporary file in " + dir.string());
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -82,8 +81,7 @@ std::unique_lock<std::mutex> TemporaryFile::hold() const {
 // file, and a flush per file would dominate batch runs writing dozens each.
 void TemporaryFile::commit() {
   const auto lock = hold();
-  if (::rename(path_.c_str(), target_.c_str()) != 0)
-    alpha::fail(target_ + ": cannot create: " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  if (::rename(path_.c_str(), target_.c_str()) != 0) alpha::fail(target_ + ": cannot create: " + std::strerror(errno));
   if (temporaries_) temporaries_->erase(path_);
   path_.clear();
 }
@@ -93,13 +91,12 @@ namespace {
 // The content in tmp, the temporary file of path (not yet renamed).
 void fill(const TemporaryFile& tmp, const std::string& path, std::string_view content) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory", alpha::ErrorKind::BadInput);
+  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
   std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-  if (!out)
-    alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
   out.write(content.data(), std::streamsize(content.size()));
   out.close();
-  if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
 }
 
 }  // namespace

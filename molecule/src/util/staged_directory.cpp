@@ -48,20 +48,16 @@ StagedDirectory::StagedDirectory(const fs::path& target, const std::string& name
   if (exists_no_follow(sibling_)) {  // left by a killed run, or in use by a live one
     const int fd = lock_directory(sibling_);
     if (fd < 0 && errno == EWOULDBLOCK)
-      alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)",
-                  alpha::ErrorKind::BadInput);
+      alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)");
     if (fd >= 0) ::close(fd);
     std::error_code ec;
     fs::remove_all(sibling_, ec);
   }
   if (::mkdir(sibling_.c_str(), 0777) != 0)
-    alpha::fail(name_ + ": cannot create " + sibling_.string() + ": " + std::strerror(errno),
-                alpha::ErrorKind::BadInput);
+    alpha::fail(name_ + ": cannot create " + sibling_.string() + ": " + std::strerror(errno));
   if (temporaries_) temporaries_->add(sibling_.string());
   lock_fd_ = lock_directory(sibling_);
-  if (lock_fd_ < 0)
-    alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)",
-                alpha::ErrorKind::BadInput);
+  if (lock_fd_ < 0) alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)");
 }
 
 StagedDirectory::~StagedDirectory() {
@@ -87,29 +83,24 @@ void StagedDirectory::write(const std::string& file, std::string_view content) {
   const fs::path path = sibling_ / file;
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
-  if (ec)
-    alpha::fail(name_ + ": cannot create " + path.parent_path().string() + ": " + ec.message(),
-                alpha::ErrorKind::BadInput);
+  if (ec) alpha::fail(name_ + ": cannot create " + path.parent_path().string() + ": " + ec.message());
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out)
-    alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  if (!out) alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno));
   out.write(content.data(), std::streamsize(content.size()));
   out.close();
-  if (out.fail())
-    alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  if (out.fail()) alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno));
 }
 
 void StagedDirectory::commit() {
   const auto lock = hold();
   const auto fail_errno = [&](const std::string& what) {
-    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno));
   };
   if (!exists_no_follow(target_)) {
     if (::rename(sibling_.c_str(), target_.c_str()) != 0) fail_errno("create it");
   } else {
     const int target_fd = lock_directory(target_);  // the earlier run, at sibling_ after the swap
-    if (target_fd < 0 && errno == EWOULDBLOCK)
-      alpha::fail(name_ + ": another alphapocket run is writing it", alpha::ErrorKind::BadInput);
+    if (target_fd < 0 && errno == EWOULDBLOCK) alpha::fail(name_ + ": another alphapocket run is writing it");
     struct Close {
       int fd;
       ~Close() {
