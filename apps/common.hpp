@@ -22,8 +22,6 @@
 
 namespace alphapocket {
 
-// Radius of the solvent probe added to every atom radius, A (water).
-inline constexpr double kDefaultProbe = 1.4;
 // Larger probes are refused: they make nothing of interest, and the
 // areas and volumes of balls that large lose their digits.
 inline constexpr double kMaxProbe = 100;
@@ -32,7 +30,7 @@ struct InputOptions {
   std::string file;
   bool weighted = false;                 // point files: x y z r per line
   molecule::StructureOptions structure;  // structure files: which atoms
-  double probe = kDefaultProbe;          // structure files: atom i is (x_i, (r_i + probe)^2)
+  double probe = molecule::CavityOptions{}.probe;  // structure files: atom i is (x_i, (r_i + probe)^2)
   unsigned threads = 1;                  // the triangulation's (add_threads_option)
   // The options that only apply to structure files, to reject them when
   // FILE is a point file.
@@ -56,14 +54,13 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
 // `batch` share: --min-volume, --mesh.
 void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options);
 
-// Adds --outputs LIST (report,csv,pml,pdb,meshes,tunnels,html or all; checked, a
+// Adds --outputs LIST (report,csv,pml,pdb,meshes,tunnels or all; checked, a
 // wrong item is a usage error); `where` names the folder they go to in the help.
 void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where);
 
 // The outputs that --outputs `list` selects, with the meshes added when
 // --mesh or --mesh-resolution is on the command line: asking for a mesh
-// format is asking for meshes. html, unless named in `list`, only when the
-// viewer files are installed (molecule/report_assets.hpp).
+// format is asking for meshes.
 molecule::OutputSelection selected_outputs(const CLI::App& sub, const std::string& list);
 
 // A structure file read through the molecule layer; logs (info) what was

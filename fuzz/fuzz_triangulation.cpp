@@ -6,7 +6,10 @@
 // on a plane or a line with a few off it; at scales from 1e-120 to 1e16;
 // unweighted, or with weights (some negative).
 //
-// Properties: unusable input is an alpha::Error; otherwise the
+// Properties: unusable input is an alpha::Error, never an Internal one, and
+// input that is usable is not refused: for the small-integer encodings at
+// scales within the limits, 4 affinely independent points, decided here in
+// exact integers, must give a triangulation. Otherwise the
 // triangulation passes the exact validator, the spectrum is sorted, the
 // full complex (the convex hull) has the Betti numbers of a point (1 0 0),
 // and with non-negative weights the union of balls has a finite area and a
@@ -64,7 +67,29 @@ private:
 struct Input {
   std::vector<alpha::Vec3> points;
   std::vector<double> weights;
+  // For encodings 0 and 3 at a scale well within the limits (coordinates
+  // below 1e15, weights below 1e30, distinct points more than 1e-100
+  // apart): the points in units of the scale, exact integers. Empty otherwise.
+  std::vector<std::array<long long, 3>> units;
 };
+
+// Whether 4 of the integer points are affinely independent (exact: the
+// coordinates are below 2^9, the products below 2^33).
+bool spans_3d(const std::vector<std::array<long long, 3>>& q) {
+  const auto d = [&](std::size_t i, std::size_t j, int k) { return q[j][k] - q[i][k]; };
+  std::size_t b = 1;
+  while (b < q.size() && q[b] == q[0]) ++b;
+  for (std::size_t c = b + 1; c < q.size(); ++c) {
+    const long long cx = d(0, b, 1) * d(0, c, 2) - d(0, b, 2) * d(0, c, 1),
+                    cy = d(0, b, 2) * d(0, c, 0) - d(0, b, 0) * d(0, c, 2),
+                    cz = d(0, b, 0) * d(0, c, 1) - d(0, b, 1) * d(0, c, 0);
+    if (cx == 0 && cy == 0 && cz == 0) continue;  // c on the line of 0 and b
+    for (std::size_t e = c + 1; e < q.size(); ++e)
+      if (cx * d(0, e, 0) + cy * d(0, e, 1) + cz * d(0, e, 2) != 0) return true;
+    return false;  // every point on the plane of 0, b and c
+  }
+  return false;
+}
 
 Input decode(Bytes in) {
   const std::uint8_t mode = in.byte();
@@ -72,13 +97,17 @@ Input decode(Bytes in) {
   const bool weighted = mode & 4;
   const double scale = kScale[(mode >> 3) & 15];
   const bool plane_only = mode & 128;  // encoding 3: a line instead of a plane
+  const bool integer = (encoding == 0 || encoding == 3) && scale >= 1e-50 && scale <= 1e12;
   Input out;
   while (!in.empty() && out.points.size() < kMaxPoints) {
     alpha::Vec3 p;
     switch (encoding) {
-      case 0:
-        p = {in.small() * scale, in.small() * scale, in.small() * scale};
+      case 0: {
+        const int x = in.small(), y = in.small(), z = in.small();
+        p = {x * scale, y * scale, z * scale};
+        if (integer) out.units.push_back({x, y, z});
         break;
+      }
       case 1: {
         const double ulp = scale * 0x1p-44;
         p = {in.small() * scale + in.small() * ulp, in.small() * scale + in.small() * ulp,
@@ -91,9 +120,10 @@ Input decode(Bytes in) {
       default: {
         // z = x + 2y (or the line y = 2x, z = 3x), a point off it when
         // the selector byte says so.
-        const double x = in.small() * scale, y = plane_only ? 2 * x : in.small() * scale;
-        const double off = (in.byte() & 31) == 0 ? scale : 0;
-        p = {x, y, (plane_only ? 3 * x : x + 2 * y) + off};
+        const int ix = in.small(), iy = plane_only ? 2 * ix : in.small(), off = (in.byte() & 31) == 0;
+        const double x = ix * scale, y = plane_only ? 2 * x : iy * scale;
+        p = {x, y, (plane_only ? 3 * x : x + 2 * y) + off * scale};
+        if (integer) out.units.push_back({ix, iy, (plane_only ? 3 * ix : ix + 2 * iy) + off});
       }
     }
     out.points.push_back(p);
@@ -132,6 +162,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const alpha::Error& e) {
     fuzz::check(std::string_view(e.what()).find('\n') == std::string_view::npos, "the message is not one line",
                 e.what());
+    fuzz::check(e.kind() != alpha::ErrorKind::Internal, "an internal error", e.what());
+    // Scaling rounds each coordinate by at most half an ulp: an independent
+    // integer configuration stays independent (its determinant is >= 1 in
+    // units, the rounding moves it by about 1e-12).
+    fuzz::check(!spans_3d(input.units), "usable input refused", e.what());
     return 0;
   }
   const alpha::ValidationReport report = alpha::validate(*t);

@@ -7,8 +7,9 @@
 # BUILD_DIR: configured with clang and -DALPHAPOCKET_FUZZ=ON (.ci/sanitizers
 # does it). Each target first replays its regression inputs
 # (fuzz/regressions/TARGET/: inputs that once found a bug), then fuzzes
-# for SECONDS from a seed corpus (tests/data) with the PDB/mmCIF
-# dictionary. The random seed is fixed ($FUZZ_SEED, default 1) so that a
+# for SECONDS from a seed corpus (tests/data and the corpus kept in
+# fuzz/corpus/TARGET/, which it first replays: the minimised inputs of
+# the long runs, see fuzz/README.md) with the PDB/mmCIF dictionary. The random seed is fixed ($FUZZ_SEED, default 1) so that a
 # CI run can be replayed; hunting runs set another one. The corpus grows in $FUZZ_CORPUS/TARGET (default: a
 # temporary directory, removed at the end); a crash, leak, timeout or
 # sanitizer report stops with exit 1, its input saved as
@@ -56,6 +57,12 @@ for target in "${targets[@]}"; do
     "$exe" $(options "$target") "$regressions"/* >"$scratch/$target.replay.log" 2>&1 ||
       { cat "$scratch/$target.replay.log"; status=1; continue; }
   fi
+  kept=$here/corpus/$target
+  if [[ -d $kept ]]; then
+    echo "== $target: replaying the $(ls "$kept" | wc -l) inputs of its kept corpus"
+    "$exe" $(options "$target") -runs=0 -timeout=30 -rss_limit_mb=2560 "$kept" >"$scratch/$target.corpus.log" 2>&1 ||
+      { tail -n 60 "$scratch/$target.corpus.log"; status=1; continue; }
+  fi
   corpus=${FUZZ_CORPUS:+$FUZZ_CORPUS/$target}
   corpus=${corpus:-$scratch/corpus/$target}
   mkdir -p "$corpus" "$scratch/seeds/$target"
@@ -63,7 +70,7 @@ for target in "${targets[@]}"; do
   echo "== $target: fuzzing for $seconds s"
   if "$exe" $(options "$target") -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2560 \
       -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
-      "$corpus" "$scratch/seeds/$target" >"$scratch/$target.log" 2>&1; then
+      "$corpus" "$scratch/seeds/$target" $([[ -d $kept ]] && echo "$kept") >"$scratch/$target.log" 2>&1; then
     grep -E '^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)|^#[0-9]+.*DONE' "$scratch/$target.log" || true
   else
     tail -n 60 "$scratch/$target.log"

@@ -100,6 +100,33 @@ molecule::AnalysisOptions analysis_options(const py::dict& o) {
   return a;
 }
 
+// analyze()'s defaults, by the CLI's names, read from the C++ option
+// structs (and the CLI's default output list), so that the library, the
+// CLI and Python cannot disagree.
+py::dict analysis_defaults() {
+  const molecule::AnalysisOptions a;
+  py::dict d;
+  d["probe"] = a.cavities.probe;
+  d["min_volume"] = a.cavities.min_volume;
+  d["model"] = a.structure.model;
+  d["chains"] = py::list(py::cast(a.structure.chains));
+  d["keep_hydrogens"] = a.structure.keep_hydrogens;
+  d["keep_waters"] = a.structure.keep_waters;
+  d["keep_hetero"] = a.structure.keep_hetero;
+  d["keep_cofactors"] = a.structure.keep_cofactors;
+  d["min_plddt"] = a.structure.min_plddt;
+  d["radii"] = a.radii_file;
+  d["tunnels_from"] = a.tunnels_from;
+  d["tunnel_probe"] = a.tunnels.probe;
+  d["pores"] = a.tunnels.pores;
+  d["mesh"] = a.mesh_format;
+  d["outputs"] = std::string(molecule::kDefaultOutputs);
+  d["ranking"] = a.ranking == molecule::SiteRanking::probability ? "probability" : "geometric";
+  d["max_input_mb"] = a.structure.max_input_mib;
+  d["threads"] = a.cavities.threads;
+  return d;
+}
+
 using Analysis = std::shared_ptr<const molecule::Analysis>;
 
 Analysis analyse_path(const std::string& path, const py::dict& options) {
@@ -335,6 +362,7 @@ PYBIND11_MODULE(_core, m) {
            })
       .def_property_readonly("file", [](const molecule::Analysis& a) { return a.file; });
 
+  m.def("analysis_defaults", &analysis_defaults);
   m.def("analyse_path", [](const std::string& path, const py::dict& options) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));
   });

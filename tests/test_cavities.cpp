@@ -51,8 +51,9 @@ struct Balls {
   }
   // Every cavity, however small (min_volume 0: the voids are the b2 classes).
   Cavities cavities(double split_persistence = molecule::CavityOptions{}.split_persistence,
-                    double split_volume = molecule::CavityOptions{}.split_volume) const {
+                    double split_volume = molecule::CavityOptions{}.split_volume, unsigned threads = 1) const {
     molecule::CavityOptions options;
+    options.threads = threads;
     options.probe = probe;
     options.min_volume = 0;
     options.split_persistence = split_persistence;
@@ -235,12 +236,15 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   for (const Cavity& c : cav.voids) check_cavity(c, false);
   for (const auto* list : {&cav.pockets, &cav.voids})
     for (std::size_t k = 1; k < list->size(); ++k) CHECK((*list)[k - 1].score >= (*list)[k].score);
-  // Sites: each pocket once and each void that holds a ligand site, best
-  // first; among equal scores pockets first, each kind in its list's order.
+  // Sites: each pocket once and each void that holds a ligand (a
+  // drug-sized one by free space, or about six heavy atoms by MS volume),
+  // best first; among equal scores pockets first, each kind in its list's
+  // order.
   std::vector<std::pair<bool, std::size_t>> expected, sites;
   for (std::size_t k = 0; k < cav.pockets.size(); ++k) expected.emplace_back(false, k);
   for (std::size_t k = 0; k < cav.voids.size(); ++k)
-    if (cav.voids[k].sa_volume >= molecule::kLigandSiteVolume) expected.emplace_back(true, k);
+    if (cav.voids[k].sa_volume >= molecule::kLigandSiteVolume || cav.voids[k].ms_volume >= molecule::kLigandVoidVolume)
+      expected.emplace_back(true, k);
   for (const molecule::Site& site : cav.sites) sites.emplace_back(site.is_void, site.index);
   std::sort(sites.begin(), sites.end());
   CHECK(sites == expected);
@@ -425,9 +429,9 @@ TEST_CASE("Cavities: a grid of balls has one void per cube, with analytic spectr
     CHECK(v.center.y - std::floor(v.center.y) == Approx(0.5));
     CHECK(v.center.z - std::floor(v.center.z) == Approx(0.5));
   }
-  // Deterministic: the same input gives the same result, bit for bit.
-  const Balls again(pts, std::vector<double>(pts.size(), 0.5), 0.25);
-  const Cavities cav2 = again.cavities();
+  // The same, bit for bit, measured on 3 threads.
+  const molecule::CavityOptions defaults;
+  const Cavities cav2 = b.cavities(defaults.split_persistence, defaults.split_volume, 3);
   REQUIRE(cav2.voids.size() == cav.voids.size());
   for (std::size_t k = 0; k < cav.voids.size(); ++k) CHECK(same(cav.voids[k], cav2.voids[k]));
 }
@@ -590,9 +594,9 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   CHECK(all_cells(castp.pockets) == all_cells(cav.pockets));
   CHECK(cav.pockets.size() > castp.pockets.size());
   CHECK(castp.voids.size() == cav.voids.size());
-  // Deterministic.
-  const Balls again(pts, radii, 1.4);
-  const Cavities cav2 = again.cavities();
+  // The same, bit for bit, measured on 3 threads.
+  const molecule::CavityOptions defaults;
+  const Cavities cav2 = b.cavities(defaults.split_persistence, defaults.split_volume, 3);
   REQUIRE(cav2.pockets.size() == cav.pockets.size());
   for (std::size_t k = 0; k < cav.pockets.size(); ++k) CHECK(same(cav.pockets[k], cav2.pockets[k]));
 }

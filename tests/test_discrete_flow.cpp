@@ -12,6 +12,7 @@
 #include "alpha/alpha_complex.hpp"
 #include "alpha/discrete_flow.hpp"
 #include "point_sets.hpp"
+#include "threaded_complexes.hpp"
 
 using namespace alpha;
 
@@ -171,16 +172,15 @@ TEST_CASE("Discrete flow: degenerate grid and cospherical points", "[flow]") {
   for (Index level = 0; level <= sp.spectrum_size(); ++level) check_flow(sp, level, false);
 }
 
-TEST_CASE("Discrete flow: deterministic", "[flow]") {
-  const std::vector<Vec3> pts = testing::random_points(500, 5, 10.0);
-  const std::vector<double> w = testing::random_weights(500, 6, 0.5, 2.0);
-  const Triangulation t1(pts, w), t2(pts, w);
-  const AlphaComplex a1(t1), a2(t2);
-  const DiscreteFlow f1(a1, a1.level(0.0)), f2(a2, a2.level(0.0));
-  REQUIRE(f1.num_regions() == f2.num_regions());
-  for (Index c = 0; c < t1.num_cells(); ++c) {
-    REQUIRE(f1.flow_facets(c) == f2.flow_facets(c));
-    REQUIRE(f1.outside(c) == f2.outside(c));
-    REQUIRE(f1.region(c) == f2.region(c));
-  }
+TEST_CASE("Discrete flow: the same for a complex built on 2 or 3 threads", "[flow]") {
+  const testing::ThreadedComplexes c(5);
+  REQUIRE(c.t2.num_vertices() >= AlphaComplex::kThreadsFrom);
+  REQUIRE(c.t2.num_cells() == c.t3.num_cells());
+  const DiscreteFlow f2(c.a2, c.a2.level(0.0)), f3(c.a3, c.a3.level(0.0));
+  REQUIRE(f2.num_regions() == f3.num_regions());
+  REQUIRE(f2.num_regions() > 10);
+  std::size_t differ = 0;
+  for (Index k = 0; k < c.t2.num_cells(); ++k)
+    differ += f2.flow_facets(k) != f3.flow_facets(k) || f2.outside(k) != f3.outside(k) || f2.region(k) != f3.region(k);
+  CHECK(differ == 0);
 }

@@ -7,12 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
 #include <string>
 
 #include "ranking/ligand_sites.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
+#include "mesh_checks.hpp"
 
 namespace {
 
@@ -136,4 +139,69 @@ TEST_CASE("ligand sites: kept groups line their site", "[ligand_sites]") {
   }
   CHECK(kept == 6);
   CHECK(lining >= 1);  // the catalytic zinc lines the inhibitor's site
+}
+
+namespace {
+
+// A closed shell of carbon atoms (residues GLY, one atom each) on a sphere of
+// radius R about the origin, 1.2-1.4 A apart (no probe passes), around a
+// benzene ring (BNZ, radius 1.4 A) at the centre when `benzene`: T4
+// lysozyme L99A's cavity in miniature (181L is not among the data).
+std::string shell_with_benzene(const std::filesystem::path& file, double radius, bool benzene) {
+  std::ofstream out(file);
+  const double pi = std::acos(-1.0), golden = pi * (3 - std::sqrt(5.0));
+  const int n = int(std::ceil(4 * pi * radius * radius / (1.3 * 1.3)));
+  char line[100];
+  for (int i = 0; i < n; ++i) {  // a Fibonacci sphere: points evenly spread
+    const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), phi = golden * i;
+    std::snprintf(line, sizeof line, "ATOM  %5d  CA  GLY A%4d    %8.3f%8.3f%8.3f  1.00 20.00           C\n", i + 1,
+                  i + 1, radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z);
+    out << line;
+  }
+  if (benzene)
+    for (int k = 0; k < 6; ++k) {
+      std::snprintf(line, sizeof line, "HETATM%5d  C%d  BNZ B 400    %8.3f%8.3f%8.3f  1.00 20.00           C\n",
+                    n + k + 1, k + 1, 1.4 * std::cos(k * pi / 3), 1.4 * std::sin(k * pi / 3), 0.0);
+      out << line;
+    }
+  out << "END\n";
+  return file.string();
+}
+
+}  // namespace
+
+TEST_CASE("ligand sites: a void that holds a small ligand is a site, and holds it", "[ligand_sites]") {
+  testing::TempDir dir;
+  // R = 5.4 A: some 200 A^3 of MS volume (T4L L99A's benzene cavity: 209)
+  // but far less free space than a drug-sized site (kLigandSiteVolume).
+  const molecule::Structure s = molecule::read_structure(shell_with_benzene(dir / "shell.pdb", 5.4, true));
+  REQUIRE(s.hetero_groups.size() == 1);
+  const molecule::PocketSearch search = molecule::search_pockets(s, {});
+  const molecule::Cavities& cav = search.cavities;
+  REQUIRE(cav.voids.size() == 1);
+  const molecule::Cavity& v = cav.voids.front();
+  CHECK(v.sa_volume < molecule::kLigandSiteVolume);
+  CHECK(v.ms_volume >= molecule::kLigandVoidVolume);
+  CHECK(molecule::holds_ligand(v));
+  std::size_t rank = 0;
+  for (std::size_t k = 0; k < cav.sites.size(); ++k)
+    if (cav.sites[k].is_void) rank = k + 1;
+  REQUIRE(rank > 0);  // a site whatever its probability
+  // The ligands summary places the benzene in it, all six atoms inside.
+  const std::vector<molecule::LigandSite> found = molecule::ligand_sites(s, search);
+  REQUIRE(found.size() == 1);
+  CHECK(found[0].site == rank);
+  CHECK(found[0].atoms_in_site == 6);
+
+  // The geometric ranking keeps it too; a shell too small for a ligand
+  // (R = 4.4 A: under 100 A^3 of MS volume) makes a void that is no site.
+  const molecule::PocketSearch geometric = molecule::search_pockets(s, {}, molecule::SiteRanking::geometric);
+  CHECK(std::any_of(geometric.cavities.sites.begin(), geometric.cavities.sites.end(),
+                    [](const molecule::Site& site) { return site.is_void; }));
+  const molecule::Structure small = molecule::read_structure(shell_with_benzene(dir / "small.pdb", 4.4, false));
+  const molecule::PocketSearch none = molecule::search_pockets(small, {});
+  REQUIRE(none.cavities.voids.size() == 1);
+  CHECK(none.cavities.voids.front().ms_volume < molecule::kLigandVoidVolume);
+  CHECK(std::none_of(none.cavities.sites.begin(), none.cavities.sites.end(),
+                     [](const molecule::Site& site) { return site.is_void; }));
 }

@@ -2,7 +2,9 @@
 // The ligandability model (molecule/ligandability_model.hpp) and its
 // features (molecule/site_features.hpp): the compiled-in model gives the
 // margins and probabilities scikit-learn gave on every pockets-dev site
-// (fixture written by training/train.py), the evaluator follows a
+// (fixture written by training/train.py), every feature of a hand-made
+// cavity equals its value computed by hand (the fixture is alphapocket's
+// own output: it cannot catch a wrong feature), the evaluator follows a
 // hand-made model exactly, bad models are refused, and search_pockets
 // ranks the sites by the model.
 #include <catch2/catch.hpp>
@@ -118,6 +120,75 @@ TEST_CASE("ligandability: alphapocket's features of a pockets-dev structure are 
     }
     CHECK(seen == molecule::site_candidates(search.cavities).size());
   }
+}
+
+TEST_CASE("ligandability: every feature of a hand-made cavity, computed by hand", "[ligandability]") {
+  // Seven atoms of chain A (B-factors 10..70: mean 40, standard deviation
+  // 20); a pocket centred at the origin lined by the first six, at 3 A
+  // (five) and 9 A (MET SD); GLY CA 15 A away. A void as a second site
+  // candidate, with a better score and burial.
+  const auto atom = [](const char* residue, int number, const char* name, const char* element, alpha::Vec3 p,
+                       double radius, float b) {
+    molecule::Atom a;
+    a.residue_name = residue, a.seq_num = number, a.name = name, a.element = element, a.chain = "A";
+    a.position = p, a.radius = radius, a.b_factor = b;
+    return a;
+  };
+  molecule::Structure s;
+  s.atoms = {atom("ALA", 1, "N", "N", {3, 0, 0}, 1.5, 10),    atom("ALA", 1, "CA", "C", {0, 3, 0}, 1.7, 20),
+             atom("PHE", 2, "CZ", "C", {0, 0, 3}, 1.7, 30),   atom("ASP", 3, "OD1", "O", {-3, 0, 0}, 1.5, 40),
+             atom("LYS", 4, "NZ", "N", {0, -3, 0}, 1.5, 50),  atom("MET", 5, "SD", "S", {0, 0, -9}, 1.8, 60),
+             atom("GLY", 6, "CA", "C", {15, 0, 0}, 1.7, 70)};
+  molecule::Cavities cavities;
+  molecule::Cavity pocket;
+  pocket.cells = {1, 2, 3};
+  pocket.mouths.resize(2);
+  pocket.mouths[0].area = 2, pocket.mouths[0].to_outside = true;
+  pocket.mouths[1].area = 3, pocket.mouths[1].to_outside = false;
+  pocket.sa_volume = 200, pocket.ms_volume = 120, pocket.sa_area = 90, pocket.ms_area = 70;
+  pocket.depth = 4, pocket.center = {0, 0, 0}, pocket.lining_atoms = {0, 1, 2, 3, 4, 5}, pocket.sinks = {7};
+  pocket.max_alpha_sq = 3, pocket.max_probe_radius = 1.2, pocket.close_alpha_sq = 0.5, pocket.fill_alpha_sq = 2.5;
+  pocket.mouth_area = 5, pocket.buriedness = 0.75, pocket.burial_atoms = 5, pocket.score = 2;
+  molecule::Cavity void_site;
+  void_site.sa_volume = 160, void_site.center = {15, 0, 0}, void_site.lining_atoms = {6};
+  void_site.burial_atoms = 9, void_site.score = 4;
+  cavities.pockets = {pocket};
+  cavities.voids = {void_site};
+  const molecule::SiteFeatures features(s, cavities);
+  const std::vector<double> f = features(cavities.pockets[0]);
+  const std::vector<std::string>& names = molecule::site_feature_names();
+  REQUIRE(f.size() == names.size());
+  const std::map<std::string, double> expected{
+      {"is_void", 0}, {"sa_volume", 200}, {"ms_volume", 120}, {"sa_area", 90}, {"ms_area", 70}, {"mouths", 2},
+      {"mouths_to_outside", 1}, {"mouth_area", 5}, {"max_mouth_area", 3}, {"buriedness", 0.75}, {"depth", 4},
+      {"max_probe_radius", 1.2}, {"max_alpha_sq", 3}, {"persistence", 2}, {"tetrahedra", 3}, {"sinks", 1},
+      {"lining_atoms", 6}, {"lining_residues", 5},
+      // atoms within 6..20 A of the centre: five at 3 A, MET SD at 9, GLY CA at 15
+      {"burial_6", 5}, {"burial_8", 5}, {"burial_10", 6}, {"burial_12", 6}, {"burial_14", 6}, {"burial_16", 7},
+      {"burial_20", 7},
+      {"clearance", 3 - 1.7},
+      // centroid (15/7, 0, -6/7): |centroid|^2 = 261/49, Rg^2 = 351/7 - 261/49 = 2196/49
+      {"centroid_distance", std::sqrt(261.0 / 2196.0)},
+      {"log_score", std::log(2.0)}, {"score_rank", 2}, {"log_score_vs_best", std::log(2.0) - std::log(4.0)},
+      {"burial_14_vs_best", 5 - 9}, {"structure_sites", 2}, {"structure_atoms", 7},
+      // lining atoms N CA CZ OD1 NZ SD
+      {"frac_c", 2 / 6.0}, {"frac_n", 2 / 6.0}, {"frac_o", 1 / 6.0}, {"frac_s", 1 / 6.0},
+      {"frac_backbone", 2 / 6.0}, {"frac_aromatic", 1 / 6.0}, {"frac_donor", 2 / 6.0}, {"frac_acceptor", 2 / 6.0},
+      {"frac_positive", 1 / 6.0}, {"frac_negative", 1 / 6.0},
+      // residues ALA PHE ASP LYS MET; Kyte-Doolittle 1.8 + 2.8 - 3.5 - 3.9 + 1.9 = -0.9
+      {"res_hydrophobic", 3 / 5.0}, {"res_aromatic", 1 / 5.0}, {"res_polar", 0}, {"res_positive", 1 / 5.0},
+      {"res_negative", 1 / 5.0}, {"res_gly", 0}, {"res_pro", 0}, {"hydropathy", -0.9 / 5},
+      // B z-scores -1.5 -1 -0.5 0 0.5 1
+      {"b_zscore", -1.5 / 6}};
+  REQUIRE(expected.size() == names.size());
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    INFO(names[k]);
+    REQUIRE(expected.count(names[k]) == 1);
+    CHECK(f[k] == Approx(expected.at(names[k])).margin(1e-12));
+  }
+  const std::vector<double> v = features(cavities.voids[0]);
+  CHECK(v[0] == 1);  // is_void
+  CHECK(v[std::find(names.begin(), names.end(), "score_rank") - names.begin()] == 1);
 }
 
 TEST_CASE("ligandability: the evaluator follows a hand-made model", "[ligandability]") {

@@ -20,6 +20,7 @@
 #include "alpha/geometry.hpp"
 #include "alpha/persistent_basins.hpp"
 #include "point_sets.hpp"
+#include "threaded_complexes.hpp"
 
 using namespace alpha;
 
@@ -173,8 +174,16 @@ TEST_CASE("Persistent basins: a grid's cubes are basins of persistence sqrt(3/4)
   REQUIRE(cubes.size() == 27);
   cube_corners(t, cubes);
   CHECK(persistent_basins(ac, level, cells, {0.17}).size() == 1);
-  // Deterministic.
-  CHECK(persistent_basins(ac, level, cells, {0.15}) == cubes);
+}
+
+TEST_CASE("Persistent basins: the same for a complex built on 2 or 3 threads", "[basins]") {
+  const testing::ThreadedComplexes c(8);
+  REQUIRE(c.t2.num_vertices() >= AlphaComplex::kThreadsFrom);
+  const std::vector<Index> cells = empty_cells(c.a2, c.a2.level(0.0));
+  REQUIRE(cells == empty_cells(c.a3, c.a3.level(0.0)));
+  const Basins basins = persistent_basins(c.a2, c.a2.level(0.0), cells, {0.2});
+  REQUIRE(basins.size() > 10);
+  CHECK(persistent_basins(c.a3, c.a3.level(0.0), cells, {0.2}) == basins);
 }
 
 TEST_CASE("Persistent basins: the size rule on a grid's cubes", "[basins]") {

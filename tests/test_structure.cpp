@@ -695,8 +695,7 @@ TEST_CASE("structure: atoms alike in identity are ordered by position, whatever 
   // Duplicate names: two CB without altloc (both kept); CA in altlocs A and
   // B and two CG in B only, all of occupancy 0.5: A is chosen (a tie: the
   // smallest letter) and one CG kept, by position, not the first in the
-  // file. A water in the same chain stays after the residue (a hetero
-  // group: one residue is no polymer).
+  // file. A water in the same chain stays after the residue.
   std::vector<std::string> records{
       pdb_atom("ATOM", 1, "CA", 'A', "ALA", 'A', 1, 1.5, 0, 0, 0.5, "C"),
       pdb_atom("ATOM", 2, "CA", 'B', "ALA", 'A', 1, 1.5, 0.3, 0, 0.5, "C"),

@@ -65,7 +65,7 @@ TEST_CASE("surface job: one ball and two overlapping balls in closed form") {
   CHECK(unequal.ball_volumes[0] + unequal.ball_volumes[1] == Approx(unequal.sa_volume).epsilon(1e-12));
 }
 
-TEST_CASE("surface job: flat molecules, --sa-only, determinism") {
+TEST_CASE("surface job: flat molecules, --sa-only, independent of the atom order") {
   // Three atoms in a line: far points make them span 3D; areas per atom only.
   const std::vector<molecule::Atom> line{atom(0, 0, 0, 1.7), atom(1.5, 0, 0, 1.7), atom(3, 0, 0, 1.7)};
   const molecule::Surface s = molecule::measure_surface(line, {.probe = 1.4, .excluded = false});
@@ -75,9 +75,17 @@ TEST_CASE("surface job: flat molecules, --sa-only, determinism") {
   REQUIRE(s.ball_volumes.size() == 3);  // the far points' balls are not the atoms'
   CHECK(s.ball_volumes[0] + s.ball_volumes[1] + s.ball_volumes[2] == Approx(s.sa_volume).epsilon(1e-12));
   CHECK_FALSE(s.ms_area.has_value());
-  const molecule::Surface again = molecule::measure_surface(line, {.probe = 1.4, .excluded = false});
-  CHECK(again.sa_area == s.sa_area);
-  CHECK(again.ball_areas == s.ball_areas);
+  // Unequal atoms in a line, in both orders: the same measures, per atom too.
+  const std::vector<molecule::Atom> uneven{atom(0, 0, 0, 1.7), atom(1.5, 0, 0, 1.5), atom(3.2, 0, 0, 1.2)};
+  const std::vector<molecule::Atom> reversed(uneven.rbegin(), uneven.rend());
+  const molecule::Surface forward = molecule::measure_surface(uneven, {.probe = 1.4, .excluded = false}),
+                          backward = molecule::measure_surface(reversed, {.probe = 1.4, .excluded = false});
+  CHECK(backward.sa_area == Approx(forward.sa_area).epsilon(1e-12));
+  CHECK(backward.sa_volume == Approx(forward.sa_volume).epsilon(1e-12));
+  REQUIRE(backward.ball_areas.size() == 3);
+  CHECK(forward.ball_areas[0] != Approx(forward.ball_areas[2]).epsilon(1e-3));
+  for (std::size_t i = 0; i < 3; ++i)
+    CHECK(backward.ball_areas[2 - i] == Approx(forward.ball_areas[i]).epsilon(1e-12));
 }
 
 TEST_CASE("surface job: error kinds, and the file named") {

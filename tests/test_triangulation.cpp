@@ -140,12 +140,33 @@ TEST_CASE("Weighted grid with equal weights equals the unweighted grid", "[trian
   CHECK(cell_shapes(plain) == cell_shapes(weighted));
 }
 
-TEST_CASE("Weighted grid with alternating weights hides nothing on the hull", "[triangulation][weighted][degenerate]") {
+TEST_CASE("Weighted grid hides interior points and nothing on the hull", "[triangulation][weighted][degenerate]") {
+  // A 5x5x5 unit grid, the hull points weighted 1.5, the interior ones in a
+  // checkerboard of 1.5 and 0. A weight-0 point whose six neighbours weigh
+  // 1.5 is hidden: each bisector plane lies 0.25 behind it. A hull point
+  // among equal weights keeps the region beyond its face: never hidden.
   const auto pts = testing::grid_points(5);
   std::vector<double> w(pts.size());
-  for (std::size_t i = 0; i < w.size(); ++i) w[i] = (i % 3) * 0.5;
+  std::size_t light = 0;
+  const auto on_hull = [](const Vec3& p) {
+    return std::min({p.x, p.y, p.z}) == 0 || std::max({p.x, p.y, p.z}) == 4;
+  };
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const Vec3& p = pts[i];
+    const bool odd = int(p.x + p.y + p.z) % 2 == 1;
+    w[i] = !on_hull(p) && odd ? 0.0 : 1.5;
+    light += w[i] == 0;
+  }
+  REQUIRE(light == 14);
   const Triangulation t(pts, w);
   require_valid(t);
+  CHECK(brute_force_violations(t) == 0);
+  CHECK(t.num_hidden() == light);
+  for (Index i = 0; i < t.num_points(); ++i) {
+    INFO("point " << i);
+    CHECK((t.status(i) == PointStatus::hidden) == (w[i] == 0));
+    if (on_hull(pts[i])) CHECK(t.status(i) == PointStatus::vertex);
+  }
 }
 
 TEST_CASE("Result does not depend on input order for generic points", "[triangulation]") {

@@ -134,7 +134,7 @@ TEST_CASE("tunnel paths: bad input is refused", "[tunnels]") {
   CHECK_THROWS_AS(molecule::find_tunnel_paths(ac, a.radii, {}, o), alpha::Error);
   // A start far away, or in no cell the probe fits: no tunnel, no error.
   const std::vector<molecule::TunnelStart> far{{"far", {}, {1e6, 0, 0}}};
-  CHECK(molecule::find_tunnel_paths(ac, a.radii, far, {}).size() <= 5);
+  CHECK(molecule::find_tunnel_paths(ac, a.radii, far, {}).empty());
 }
 
 TEST_CASE("radius file: HOLE's simple.rad and the native format", "[tunnels][radii]") {

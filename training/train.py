@@ -4,9 +4,10 @@
 
     /usr/bin/python3 training/train.py [--alphapocket EXE] [--data DIR] [--work DIR] [--model KIND]
 
-Runs `alphapocket pockets --features` on every structure of pockets-train and pockets-dev, labels each
-cavity by bench/ligand_sites' rules (a hit when its centre is within 4 A of a ligand atom), fits the
-trees on pockets-train only (fixed seeds), calibrates their margin by isotonic regression on
+Runs `alphapocket pockets --features` on every structure of the training sets (--train, default
+pockets-train) and the dev sets (--dev, default pockets-dev; PoseBusters folders too), labels each
+cavity by bench/ligand_sites' rules (a hit when its centre is within 4 A of a ligand atom, any copy of
+it), fits the trees on the training sets only (fixed seeds), calibrates their margin by isotonic regression on
 out-of-fold margins of a grouped (by structure) 5-fold cross-validation, and writes
 molecule/data/ligandability.json and the test fixture tests/data/ligandability/pockets-dev.csv (every
 pockets-dev site's features with scikit-learn's margin and probability). Prints the cross-validated
@@ -15,6 +16,7 @@ figures on pockets-train, the figures on pockets-dev for both rankings and relia
 import argparse
 import atexit
 import csv
+import gzip
 import json
 import math
 import os
@@ -33,7 +35,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODEL = os.path.join(ROOT, "molecule", "data", "ligandability.json")
 HIT = 4.0    # A, DCC and DCA
 MERGE = 1.7  # A, residues of one ligand
-SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void that can be a site
+SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void (free space) the model compares
+VOID_VOLUME = 150             # molecule::kLigandVoidVolume: the smallest void (MS volume) that holds a ligand
 MIN_SITE_PROBABILITY = 0.04   # molecule::kMinSiteProbability: candidates below it are no sites
 BAG = 5                       # gradient-boosted models averaged, seeds 0..BAG-1
 CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
@@ -89,20 +92,52 @@ def read_ligands(path, codes):
     return [np.vstack(v) for v in ligands.values()]
 
 
+def read_sdf(path):
+    """The heavy atoms of every molecule of an SD file of V2000 molfiles (PoseBusters' ligands.sdf: every copy
+    of the ligand of interest)."""
+    lines, mols, i = open(path).read().split("\n"), [], 0
+    while i + 3 < len(lines):
+        if not lines[i + 3].rstrip().endswith("V2000"):
+            raise SystemExit(f"{path}: not an SD file of V2000 molfiles")
+        n = int(lines[i + 3][:3])
+        atoms = [[float(x) for x in l.split()[:3]] for l in lines[i + 4:i + 4 + n] if l.split()[3] not in ("H", "D")]
+        mols.append(np.array(atoms))
+        while not lines[i].startswith("$$$$"):
+            i += 1
+        i += 1
+    return mols
+
+
+def dataset_entries(dataset):
+    """(name, structure file, ligands) of a COACH420 set (a .ds file; each ligand a target) or a PoseBusters one
+    (ENTRY/protein.pdb.gz, ENTRY/ligands.sdf: every copy of the ligand, one target)."""
+    if any(f.endswith(".ds") for f in os.listdir(dataset)):
+        return [(os.path.splitext(f)[0], os.path.join(dataset, f),
+                 lambda f=f, codes=codes: read_ligands(os.path.join(dataset, f), codes)) for f, codes in read_ds(dataset)]
+    return [(n, os.path.join(dataset, n, "protein.pdb.gz"), lambda n=n: read_sdf(os.path.join(dataset, n, "ligands.sdf")))
+            for n in sorted(os.listdir(dataset))]
+
+
+def chain_count(path):
+    """Protein chains of a PDB file (ATOM records' chain ids)."""
+    with (gzip.open if path.endswith(".gz") else open)(path, "rt") as f:
+        return len({line[21] for line in f if line.startswith("ATOM")})
+
+
 def run_alphapocket(exe, dataset, work, extra):
     """Features of every cavity of every structure: list of (name, header, rows, ligands, buried surface
-    points). The meshes are no features: a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take
-    no time."""
-    entries = read_ds(dataset)
+    points, whether the entry's ligand copies are one target, protein chains). The meshes are no features:
+    a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take no time."""
+    entries = dataset_entries(dataset)
+    copies = not any(f.endswith(".ds") for f in os.listdir(dataset))
     os.makedirs(work, exist_ok=True)
 
     def one(entry):
-        file, codes = entry
-        name = os.path.splitext(file)[0]
+        name, path, ligands = entry
         out = os.path.join(work, name)
         features, points = out + ".csv", out + ".points.csv"
         if not (os.path.exists(features) and os.path.exists(points)):
-            subprocess.run([exe, "-q", "pockets", os.path.join(dataset, file), "-o", out, "--features", features,
+            subprocess.run([exe, "-q", "pockets", path, "-o", out, "--features", features,
                             "--surface-points", points,
                             "--tunnels-from", "none", "--ranking", "geometric",
                             "--mesh-resolution", "10"] + extra, check=True, stdout=subprocess.DEVNULL)
@@ -110,21 +145,22 @@ def run_alphapocket(exe, dataset, work, extra):
             rows = list(csv.reader(f))
         surface = np.loadtxt(points, delimiter=",", skiprows=1, ndmin=2)
         buried = surface[surface[:, 3] >= BURIED_POINT_ATOMS, :3]
-        return name, rows[0], rows[1:], read_ligands(os.path.join(dataset, file), codes), buried
+        return name, rows[0], rows[1:], ligands(), buried, copies, chain_count(path)
     with ThreadPoolExecutor(2) as pool:
         return list(pool.map(one, entries))
 
 
 def table(structures):
-    """Feature matrix, labels and bookkeeping of all cavities of all structures; candidate: whether a
-    cavity can be a site (molecule::site_candidates: a pocket, or a void of at least SITE_VOLUME; which
-    of them alphapocket leaves out depends on the model, so they are all fitted and ranked); cpp:
-    alphapocket's margin and probability of each."""
+    """Feature matrix, labels and bookkeeping of all cavities of all structures; candidate: whether the model
+    compares a cavity (molecule::site_candidates: a pocket, or a void of at least SITE_VOLUME; which pockets
+    alphapocket leaves out depends on the model, so they are all fitted and ranked); holds: a void that holds
+    a ligand (molecule::holds_ligand), a site whatever its probability; cpp: alphapocket's margin and
+    probability of each."""
     header = structures[0][1]
     assert header[:len(LEADING)] == LEADING and header[-len(TRAILING):] == TRAILING, header
     names = header[len(LEADING):-len(TRAILING)]
     X, dca, dcc, group, centers, ids, cpp = [], [], [], [], [], [], []
-    for g, (name, h, rows, ligands, _) in enumerate(structures):
+    for g, (name, h, rows, ligands, *_) in enumerate(structures):
         assert h == header, name
         for r in rows:
             c = np.array([float(x) for x in r[3:6]])
@@ -136,8 +172,10 @@ def table(structures):
             centers.append(c)
             ids.append([name, r[0], r[1]])
     X = np.array(X)
-    candidate = (X[:, names.index("is_void")] == 0) | (X[:, names.index("sa_volume")] >= SITE_VOLUME)
-    return (names, X, np.array(dca, int), np.array(dcc, int), np.array(group), candidate,
+    is_void, sa = X[:, names.index("is_void")] == 1, X[:, names.index("sa_volume")]
+    candidate = ~is_void | (sa >= SITE_VOLUME)
+    holds = is_void & ((sa >= SITE_VOLUME) | (X[:, names.index("ms_volume")] >= VOID_VOLUME))
+    return (names, X, np.array(dca, int), np.array(dcc, int), np.array(group), candidate, holds,
             np.array(centers), ids, np.array(cpp))
 
 
@@ -170,28 +208,34 @@ def recenter(centers, buried):
     return out
 
 
-def figures(structures, group, sites, log_score, centers, key, prob=None):
+def figures(structures, group, sites, log_score, centers, key, prob=None, subset=None):
     """DCC and DCA at top-1 and top-3 of the sites (a mask) ranked by `key` (larger first; ties: the
     geometric order, by log_score, then pockets before voids, each in its order: the rows' order); with
-    `prob` (the probability ranking), at their clusters' centres moved onto the buried surface."""
+    `prob` (the probability ranking), at their clusters' centres moved onto the buried surface. Targets:
+    each ligand, or an entry's copies of its ligand together (any copy hits); `subset`: the structures
+    scored (all by default). Returns the fractions, the targets and the median number of sites."""
     hits = {"dcc": [0, 0], "dca": [0, 0]}
-    total = 0
-    for g, (name, _, _, ligands, buried) in enumerate(structures):
+    total, counts = 0, []
+    for g, (name, _, _, ligands, buried, copies, _) in enumerate(structures):
+        if subset is not None and not subset[g]:
+            continue
         idx = np.where((group == g) & sites)[0]
+        counts.append(len(idx))
         idx = idx[np.argsort(-log_score[idx], kind="stable")]         # geometric order first
         idx = idx[np.argsort(-key[idx], kind="stable")]
         ranked = centers[idx] if prob is None else recenter(cluster_centers(centers[idx], prob[idx]), buried)
-        total += len(ligands)
-        for l in ligands:
+        targets = [ligands] if copies else [[l] for l in ligands]
+        total += len(targets)
+        for t_ in targets:
             for crit in ("dcc", "dca"):
                 for t, k in enumerate((1, 3)):
                     top = ranked[:k]
                     if crit == "dcc":
-                        ok = any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for c in top)
+                        ok = any(np.linalg.norm(l.mean(axis=0) - c) <= HIT for c in top for l in t_)
                     else:
-                        ok = any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in top)
+                        ok = any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in top for l in t_)
                     hits[crit][t] += ok
-    return {c: [h / total for h in v] for c, v in hits.items()}, total
+    return {c: [h / max(total, 1) for h in v] for c, v in hits.items()}, total, float(np.median(counts or [0]))
 
 
 class Bagged:
@@ -214,10 +258,11 @@ class Bagged:
         return np.mean([m.feature_importances_ for m in self.models], axis=0)
 
 
-def make_model(kind, bag=BAG):
+def make_model(kind, bag=BAG, first_seed=0):
     if kind == "gb":
         return Bagged([GradientBoostingClassifier(n_estimators=200, learning_rate=0.05, max_depth=3, subsample=0.8,
-                                                  min_samples_leaf=5, random_state=seed) for seed in range(bag)])
+                                                  min_samples_leaf=5, random_state=seed)
+                       for seed in range(first_seed, first_seed + bag)])
     if kind == "rf":
         return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=0,
                                       n_jobs=2)
@@ -230,7 +275,7 @@ def margin(model, X):
     return model.predict_proba(X)[:, 1]
 
 
-def export(model, names, iso):
+def export(model, names, iso, trained_on):
     if isinstance(model, Bagged):  # the same init (the prior log-odds) and learning rate in every member
         inits = {float(m._raw_predict_init(np.zeros((1, len(names)), dtype=np.float32))[0, 0]) for m in model.models}
         assert len(inits) == 1, inits
@@ -251,7 +296,7 @@ def export(model, names, iso):
                       "value": [float(x) if l < 0 else 0.0 for x, l in zip(v, t.children_left)]})
     kind = f"{len(model.models)} x GradientBoostingClassifier" if isinstance(model, Bagged) else type(model).__name__
     return {"format": "alphapocket ligandability model 1", "kind": kind,
-            "trained_on": "pockets-train", "features": names, "init": init, "scale": scale, "trees": trees,
+            "trained_on": "+".join(trained_on), "features": names, "init": init, "scale": scale, "trees": trees,
             "calibration": {"x": [float(x) for x in iso.X_thresholds_],
                             "y": [float(y) for y in iso.y_thresholds_]}}
 
@@ -302,6 +347,14 @@ def main():
     ap.add_argument("--label", default="dca", choices=["dca", "dcc", "both"])
     ap.add_argument("--all-cavities", action="store_true", help="fit on every cavity, not the sites only")
     ap.add_argument("--drop", default="", help="comma-separated features to leave out (for experiments)")
+    ap.add_argument("--train", default="pockets-train",
+                    help="comma-separated sets of --data to fit on (the shipped model: pockets-train)")
+    ap.add_argument("--dev", default="pockets-dev",
+                    help="comma-separated sets only predicted, to choose and report (pockets-dev among them: the "
+                         "test fixture is its sites'); e.g. pockets-dev,pockets-dev-pb")
+    ap.add_argument("--seeds", type=int, default=1,
+                    help="fit this many seed sets (seeds 0..BAG-1, BAG..2BAG-1, ...) and print the spread of the dev "
+                         "figures; the first is the model written")
     ap.add_argument("--no-write", action="store_true", help="write neither the model nor the fixture")
     ap.add_argument("--check", action="store_true",
                     help="write nothing; fail unless the rebuilt model is the committed one and alphapocket's margin "
@@ -311,10 +364,20 @@ def main():
         a.work = tempfile.mkdtemp(prefix="alphapocket_training_")  # no stale cached features
         atexit.register(shutil.rmtree, a.work, True)
 
-    train = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-train"), os.path.join(a.work, "train"), [])
-    dev = run_alphapocket(a.alphapocket, os.path.join(a.data, "pockets-dev"), os.path.join(a.work, "dev"), [])
-    names, X, dca, dcc, group, candidate, centers, _, _ = table(train)
-    dnames, dX, ddca, ddcc, dgroup, dcandidate, dcenters, dids, dcpp = table(dev)
+    def load(sets):
+        structures, set_of = [], []
+        for name in sets:
+            st = run_alphapocket(a.alphapocket, os.path.join(a.data, name), os.path.join(a.work, name), [])
+            structures += st
+            set_of += [name] * len(st)
+        return structures, np.array(set_of)
+    train, tset = load(a.train.split(","))
+    dev, dset = load(a.dev.split(","))
+    if "pockets-dev" not in a.dev.split(",") or any(d in a.train.split(",") for d in a.dev.split(",")):
+        raise SystemExit("--dev must hold pockets-dev (the test fixture) and no training set")
+    names, X, dca, dcc, group, candidate, holds, centers, _, _ = table(train)
+    dnames, dX, ddca, ddcc, dgroup, dcandidate, dholds, dcenters, dids, dcpp = table(dev)
+    assert dnames == names
     y = {"dca": dca, "dcc": dcc, "both": dca & dcc}[a.label]
     dropped = [n for n in a.drop.split(",") if n]
     keep = [i for i, n in enumerate(names) if n not in dropped]
@@ -323,7 +386,7 @@ def main():
     Xfit[:, [i for i in range(len(names)) if i not in keep]] = 0
     fit_rows = np.ones(len(y), bool) if a.all_cavities else candidate
 
-    # Grouped cross-validation on pockets-train: out-of-fold margins.
+    # Grouped cross-validation over both training folders: out-of-fold margins.
     folds = list(GroupKFold(5).split(Xfit, y, group))
     oof = np.zeros(len(y))
     for tr, te in folds:
@@ -334,47 +397,81 @@ def main():
     for tr, te in folds:
         oof_p[te] = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof[tr], y[tr]).predict(oof[te])
     iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
-    model = make_model(a.model, a.bag).fit(Xfit[fit_rows], y[fit_rows])
     dXfit = dX.copy()
     dXfit[:, [i for i in range(len(names)) if i not in keep]] = 0
-    dm = margin(model, dXfit)
-    dp = iso.predict(dm)
-
-    # The sites: the candidates alphapocket keeps (out of fold on pockets-train).
-    sites, dsites = candidate & (oof_p >= MIN_SITE_PROBABILITY), dcandidate & (dp >= MIN_SITE_PROBABILITY)
+    is_void, dis_void = X[:, names.index("is_void")] == 1, dX[:, names.index("is_void")] == 1
     log_score, dlog_score = X[:, names.index("log_score")], dX[:, names.index("log_score")]
-    cv, n_train = figures(train, group, sites, log_score, centers, oof, oof_p)
-    cv_geo, _ = figures(train, group, sites, log_score, centers, log_score)
-    dv, n_dev = figures(dev, dgroup, dsites, dlog_score, dcenters, dm, dp)
-    dv_geo, _ = figures(dev, dgroup, dsites, dlog_score, dcenters, dlog_score)
+    chains = [st[6] > 1 for st in train]
+    dchains = [st[6] > 1 for st in dev]
     fmt = lambda f: f"DCC {f['dcc'][0]:.3f} / {f['dcc'][1]:.3f}  DCA {f['dca'][0]:.3f} / {f['dca'][1]:.3f}"
-    for label, structures, g_, cand, s_, c_ in (("pockets-train", train, group, candidate, sites, centers),
-                                               ("pockets-dev", dev, dgroup, dcandidate, dsites, dcenters)):
-        missed = [sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & m])
-                      for g, (_, _, _, ligands, _) in enumerate(structures) for l in ligands) for m in (cand, s_)]
-        counts = [((g_ == g) & m).sum() for m in (cand, s_) for g in range(len(structures))]
-        print(f"{label}: {missed[0]} ligands have no candidate centre within {HIT} A of an atom, {missed[1]} no site "
-              f"centre (no ranking reaches them); median candidates {np.median(counts[:len(structures)]):g}, "
-              f"sites {np.median(counts[len(structures):]):g} per structure")
+
+    def report(label, structures, set_of, multi, g_, sites, ls, c_, key, prob):
+        """One line per set (PoseBusters: also its single- and multi-chain entries)."""
+        out = {}
+        for name in dict.fromkeys(set_of):
+            parts = [("", set_of == name)]
+            if name.endswith("-pb"):
+                parts += [(" single-chain", (set_of == name) & ~np.array(multi)),
+                          (" multi-chain", (set_of == name) & np.array(multi))]
+            for part, subset in parts:
+                f, n, med = figures(structures, g_, sites, ls, c_, key, prob, subset)
+                out[name + part] = f
+                print(f"{label} {name + part:28s} ({n:3d}): {fmt(f)}  median sites {med:g}")
+        return out
+
+    # Several seeds: the spread of the dev figures (the shipped model is the first).
+    shipped = None
+    spread = {}
+    for s_ in range(a.seeds):
+        model = make_model(a.model, a.bag, s_ * a.bag).fit(Xfit[fit_rows], y[fit_rows])
+        dm_s = margin(model, dXfit)
+        dp_s = iso.predict(dm_s)
+        dsites_s = (dcandidate & ~dis_void & (dp_s >= MIN_SITE_PROBABILITY)) | dholds
+        print(f"seeds {s_ * a.bag}-{s_ * a.bag + a.bag - 1}:")
+        for k, f in report("  dev", dev, dset, dchains, dgroup, dsites_s, dlog_score, dcenters, dm_s, dp_s).items():
+            spread.setdefault(k, []).append(f)
+        if shipped is None:
+            shipped, dm, dp, dsites = model, dm_s, dp_s, dsites_s
+    model = shipped
+    if a.seeds > 1:
+        for k, fs_ in spread.items():
+            print(f"spread over {a.seeds} seed sets, {k:28s}: " + "  ".join(
+                f"{c.upper()}@{t} {min(f[c][i] for f in fs_):.3f}-{max(f[c][i] for f in fs_):.3f}"
+                for c in ("dcc", "dca") for i, t in enumerate((1, 3))))
+
+    # The sites: the candidates alphapocket keeps (out of fold on the training folders).
+    sites = (candidate & ~is_void & (oof_p >= MIN_SITE_PROBABILITY)) | holds
     print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
-          f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive)")
-    print(f"pockets-train CV ({n_train} ligands): {fmt(cv)}   geometric: {fmt(cv_geo)}")
-    print(f"pockets-dev     ({n_dev} ligands): {fmt(dv)}   geometric: {fmt(dv_geo)}")
+          f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive) "
+          f"from {len(train)} structures")
+    report("train CV", train, tset, chains, group, sites, log_score, centers, oof, oof_p)
+    report("train geometric", train, tset, chains, group, sites, log_score, centers, log_score, None)
+    report("dev", dev, dset, dchains, dgroup, dsites, dlog_score, dcenters, dm, dp)
+    report("dev geometric", dev, dset, dchains, dgroup, dsites, dlog_score, dcenters, dlog_score, None)
+    for label, structures, g_, cand, s_, c_ in (("train", train, group, candidate, sites, centers),
+                                               ("dev", dev, dgroup, dcandidate, dsites, dcenters)):
+        missed = [sum(not any(np.linalg.norm(l - c, axis=1).min() <= HIT for c in c_[(g_ == g) & m])
+                      for g, st in enumerate(structures) for l in st[3]) for m in (cand, s_)]
+        counts = [((g_ == g) & m).sum() for m in (cand, s_) for g in range(len(structures))]
+        print(f"{label}: {missed[0]} ligands (copies) have no candidate centre within {HIT} A of an atom, {missed[1]} "
+              f"no site centre; median candidates {np.median(counts[:len(structures)]):g}, "
+              f"sites {np.median(counts[len(structures):]):g} per structure")
     s = candidate
-    print(f"Brier (sites, out-of-fold, cross-fitted calibration): {np.mean((oof_p[s] - y[s]) ** 2):.4f}, "
+    print(f"Brier (candidates, out-of-fold, cross-fitted calibration): {np.mean((oof_p[s] - y[s]) ** 2):.4f}, "
           f"base rate {y[s].mean():.3f}")
-    print("reliability, pockets-train sites out-of-fold:\n" + reliability(oof_p[s], y[s]))
+    print("reliability, both training folders' candidates out-of-fold:\n" + reliability(oof_p[s], y[s]))
     ds_ = dcandidate
     dy = {"dca": ddca, "dcc": ddcc, "both": ddca & ddcc}[a.label]
-    print("reliability, pockets-dev sites:\n" + reliability(dp[ds_], dy[ds_]))
-    imp = sorted(zip(model.feature_importances_, names), reverse=True)[:12]
+    print("reliability, both dev folders' candidates:\n" + reliability(dp[ds_], dy[ds_]))
+    imp = sorted(zip(model.feature_importances_, names), reverse=True)[:16]
     print("top features: " + ", ".join(f"{n} {v:.3f}" for v, n in imp))
+    ds_ = dcandidate & (dset[dgroup] == "pockets-dev")  # the fixture: pockets-dev's candidates
     if a.check:
-        sys.exit(check(export(model, names, iso), dm[ds_], dp[ds_], dcpp[ds_]))
+        sys.exit(check(export(model, names, iso, a.train.split(",")), dm[ds_], dp[ds_], dcpp[ds_]))
     if a.no_write:
         return
     with open(MODEL, "w") as f:
-        f.write(model_text(export(model, names, iso)))
+        f.write(model_text(export(model, names, iso, a.train.split(","))))
     fixture = os.path.join(ROOT, "tests", "data", "ligandability", "pockets-dev.csv")
     os.makedirs(os.path.dirname(fixture), exist_ok=True)
     with open(fixture, "w") as f:

@@ -27,12 +27,8 @@ from . import _core
 __all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", "BadInputError",
            "LimitExceededError", "MisuseError", "__version__"]
 
-# The defaults of `alphapocket pockets`.
-_ANALYZE_DEFAULTS = dict(probe=1.4, min_volume=1.0, model=0, chains=[], keep_hydrogens=False, keep_waters=False,
-                         keep_hetero=False, keep_cofactors=False, min_plddt=0.0, radii="", tunnels_from="auto",
-                         tunnel_probe=0.9,
-                         pores=False, mesh="ply", outputs="report,csv,pml,pdb,tunnels",
-                         ranking="probability", max_input_mb=512, threads=1)
+# The defaults of `alphapocket pockets`, read from the C++ option structs.
+_ANALYZE_DEFAULTS = _core.analysis_defaults()
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
 
 

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
-# The README's "Use from Python" examples and examples/python/ run.
+# The Python examples run: README's, docs/library.md's "Use from Python"
+# and examples/python/.
 import re
 import subprocess
 import sys
@@ -7,21 +8,31 @@ import sys
 from conftest import PDB, ROOT
 
 
-def readme_blocks(section):
-    text = (ROOT / "README.md").read_text()
+def python_blocks(document, section):
+    text = (ROOT / document).read_text()
     body = text.split("## " + section + "\n", 1)[1].split("\n## ", 1)[0]
     return re.findall(r"```python\n(.*?)```", body, re.S)
 
 
-def test_readme_python_examples(tmp_path, monkeypatch):
-    blocks = readme_blocks("Use from Python")
-    assert len(blocks) == 2
+def run_blocks(document, blocks, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "examples" / "data").mkdir(parents=True)
     (tmp_path / "examples" / "data" / "1a26A.pdb").write_bytes(PDB.read_bytes())
     for block in blocks:
-        exec(compile(block, "README.md", "exec"), {})
+        exec(compile(block, document, "exec"), {})
     assert (tmp_path / "1a26A_pockets" / "report.json").is_file()
+
+
+def test_library_python_examples(tmp_path, monkeypatch):
+    blocks = python_blocks("docs/library.md", "Use from Python")
+    assert len(blocks) == 2
+    run_blocks("docs/library.md", blocks, tmp_path, monkeypatch)
+
+
+def test_readme_python_example(tmp_path, monkeypatch):
+    blocks = python_blocks("README.md", "Use it")
+    assert len(blocks) == 1
+    run_blocks("README.md", blocks, tmp_path, monkeypatch)
 
 
 def test_sites_csv_example(tmp_path):

@@ -5,7 +5,8 @@
 # command. Usage: catalog.sh ALPHAPOCKET REPO_ROOT ID.COMMAND
 #
 # Every run happens in an empty working directory with -o OUTDIR for the
-# commands that write one (pockets, batch). What is asserted, by command:
+# commands that write one (pockets, batch), -o OUTDIR.ply for shape (at
+# --alpha-sq 1), the file it writes. What is asserted, by command:
 #   all       the exit code; on an error, stdout empty and exactly one
 #             "ERROR: " line on stderr, the last one, matching the row's
 #             message (the other lines, if any, are [info]/[warning] logs);
@@ -101,10 +102,12 @@ case $outdir_kind in
     ;;
   *) echo "catalog.sh: unknown OUTDIR kind '$outdir_kind'" >&2; exit 1 ;;
 esac
+[[ $command == shape && -n $out ]] && out=$out.ply
 before=$(snapshot "$out")
 
 args=("$command" "$in_path")
 [[ $command == pockets || $command == batch ]] && args+=(-o "$out")
+[[ $command == shape ]] && args+=(--alpha-sq 1 -o "$out")
 cd "$tmp/cwd"
 set +e
 if [[ $outdir_kind == stdout_full ]]; then

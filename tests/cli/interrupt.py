@@ -127,6 +127,10 @@ def pockets_case(work):
         fail(f"the last run left {sorted(os.listdir(work))}")
     for key in sorted(outcomes):
         print(f"{key[0]:8} {key[1]:7} {key[2]:9} {outcomes[key]}")
+    # The kills tested something: some fell into the write phase and stopped
+    # the run there (else only the trivial outcomes were seen).
+    if not any(n for (_, when, result), n in outcomes.items() if when == "write" and result != "finished"):
+        fail(f"no kill stopped a run in its write phase: {outcomes}")
 
 
 def hidden_entries(directory):
@@ -150,6 +154,7 @@ def batch_case(work):
     for f in [pdb] + [os.path.join(data, n) for n in ("1fkgA.pdb", "1ytjA.pdb", "3stdA.pdb", "1UYD.pdb")]:
         shutil.copy(f, inputs)
     rounds = int(os.environ.get("ALPHAPOCKET_KILLS", "6"))
+    interrupted = 0
     for i in range(rounds):
         out = os.path.join(work, f"o{i}")
         proc = subprocess.Popen([exe, "-q", "batch", inputs, "-o", out, "-j", "2", "--outputs",
@@ -165,6 +170,7 @@ def batch_case(work):
         rc = proc.wait()
         if rc not in (0, 130):
             fail(f"round {i}: exit code {rc}")
+        interrupted += rc == 130
         hidden = hidden_entries(out)
         if hidden:
             fail(f"round {i}: left {hidden}")
@@ -176,6 +182,8 @@ def batch_case(work):
                     fail(f"round {i}: {entry}/ holds {sorted(files)}")
                 json.loads(files["report.json"])
         print(f"round {i}: exit {rc}, {sum(os.path.isdir(os.path.join(out, e)) for e in os.listdir(out))} structures")
+    if not interrupted:  # else no SIGINT landed while the run wrote
+        fail(f"none of {rounds} runs was interrupted (exit 130)")
 
 
 work = tempfile.mkdtemp()

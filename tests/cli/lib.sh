@@ -68,3 +68,40 @@ expect_error() {  # FILE [MESSAGE-PATTERN]
     grep -qE "$2" "$tmp/err" || fail "stderr does not match '$2'"
   fi
 }
+
+# py ARGS... <<'PY': runs the Python script on stdin (sys.argv[1:] = ARGS)
+# with check(ok, detail...), which, unlike assert, python3 -O keeps.
+py() {
+  python3 -c "import sys
+def check(ok, *detail):
+    if not ok:
+        sys.exit(f'check failed: {detail}')
+$(cat)" "$@"
+}
+
+# run_unprivileged ARGS...: run as an unprivileged user (nobody), for whom
+# permission bits hold (root writes into a mode-555 directory). alphapocket
+# is copied into $tmp, which that user may read; ARGS name files in $tmp.
+# Fails, never skips, when the permissions still do not hold.
+run_unprivileged() {
+  local as=() bin=$exe
+  if [[ $(id -u) -eq 0 ]]; then
+    as=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    bin=$tmp/bin/alphapocket
+    mkdir -p "$tmp/bin"
+    cp "$exe" "$bin"
+    chmod -R a+rX "$tmp"
+  fi
+  set +e
+  "${as[@]}" "$bin" "$@" >"$tmp/out" 2>"$tmp/err"
+  rc=$?
+  set -e
+}
+
+# Whether an unprivileged run could write into DIR (then a test of a
+# read-only place proves nothing).
+writable_for_unprivileged() {  # DIR
+  local as=()
+  [[ $(id -u) -eq 0 ]] && as=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+  "${as[@]}" touch "$1/probe" 2>/dev/null
+}

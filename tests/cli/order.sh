@@ -5,7 +5,8 @@
 # residue order, reversed, a full shuffle; each within its TER-delimited
 # section, as TER records say where a polymer ends) give byte-identical
 # outputs of `pockets` (every file of OUTDIR) and `surface --json`.
-# Serial numbers travel with their records, so nothing needs to be masked:
+# A file shuffled whole (TER records left in place) gives the same outputs
+# too. Serial numbers travel with their records, so nothing needs to be masked:
 # the outputs list atoms in the reader's canonical order (docs/cli.md, Structure
 # files). Usage: order.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail
@@ -45,6 +46,22 @@ permute() {
     END { flush(); print "END" }'
 }
 
+# scatter SEED < PDB > PDB: the ATOM/HETATM records shuffled across the
+# whole file, every other record (TER too) left on its line: the records of
+# a residue, a chain and the polymer are then apart, as a file written from
+# a selection or a merge may have them.
+scatter() {
+  awk -v seed="$1" '
+    BEGIN { srand(seed) }
+    { line[NR] = $0; if (/^(ATOM|HETATM)/) atoms[++na] = NR }
+    END {
+      for (i = 1; i <= na; ++i) pick[i] = line[atoms[i]]
+      for (i = na; i > 1; --i) { j = int(rand() * i) + 1; t = pick[i]; pick[i] = pick[j]; pick[j] = t }
+      for (i = 1; i <= na; ++i) line[atoms[i]] = pick[i]
+      for (i = 1; i <= NR; ++i) print line[i]
+    }'
+}
+
 # Runs pockets and surface on $tmp/work/x.pdb (always that path: pockets.pml
 # names it) and keeps their outputs under $tmp/NAME.
 outputs() {  # NAME
@@ -73,6 +90,23 @@ case $case_name in
       diff -r "$tmp/original" "$tmp/$mode$seed" >"$tmp/diff" ||
         fail "outputs differ after permutation $mode $seed: $(head -c 600 "$tmp/diff")"
       [[ $mode == reversed ]] && break  # one reversal only
+    done
+    ;;
+  # The whole file shuffled: residues are grouped by identity, not by
+  # their records' order, and are polymer or not by their own kind (TER
+  # records no longer say where a polymer ends). 1a26A: one chain and a
+  # ligand; 1bna: two DNA chains and their waters.
+  scattered | scattered_chains)
+    input=$pdb
+    [[ $case_name == scattered_chains ]] && input=$data/1bna.pdb
+    cp "$input" "$tmp/work/x.pdb"
+    outputs original
+    for seed in 1 2; do
+      scatter "$seed" <"$input" >"$tmp/work/x.pdb"
+      [[ $(sort "$input" | md5sum) == $(sort "$tmp/work/x.pdb" | md5sum) ]] || fail "scatter $seed lost records"
+      outputs "scattered$seed"
+      diff -r "$tmp/original" "$tmp/scattered$seed" >"$tmp/diff" ||
+        fail "outputs differ after scattering $seed: $(head -c 600 "$tmp/diff")"
     done
     ;;
   *)

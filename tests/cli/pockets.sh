@@ -192,13 +192,12 @@ case "$case_name" in
     [[ ! -e "$tmp/missing" ]] || fail "the parent was created"
     ;;
   outdir_read_only)
+    # As an unprivileged user: root may write there.
     mkdir -p "$tmp/locked/o"
+    cp "$pdb" "$tmp/in.pdb"
     chmod 555 "$tmp/locked/o"
-    if touch "$tmp/locked/o/probe" 2>/dev/null; then
-      echo "SKIP [$case_name]: a read-only directory is writable here (root)"
-      exit 77
-    fi
-    run pockets "$pdb" -o "$tmp/locked/o"
+    run_unprivileged pockets "$tmp/in.pdb" -o "$tmp/locked/o"
+    ! writable_for_unprivileged "$tmp/locked/o" || fail "the read-only directory is writable"
     expect_error "$tmp/locked/o" 'Permission denied'
     [[ -z $(tree_of "$tmp/locked/o") ]] || fail "files left: $(tree_of "$tmp/locked/o")"
     ;;

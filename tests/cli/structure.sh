@@ -33,6 +33,27 @@ four_carbons() {
   echo "$f"
 }
 
+# The 80 atoms of catalog/peptide.pdb (chain A, residues 1-12) in models 1-4
+# of one file: 1 and 3 empty, 2 whole, 4 residues 1-6 only.
+models_file() {
+  local f=$tmp/models.pdb atoms=$data/catalog/peptide.pdb
+  {
+    printf 'MODEL        1\nENDMDL\nMODEL        2\n'
+    grep '^ATOM' "$atoms"
+    printf 'ENDMDL\nMODEL        3\nENDMDL\nMODEL        4\n'
+    awk '/^ATOM/ && substr($0, 23, 4) + 0 <= 6' "$atoms"
+    printf 'ENDMDL\nEND\n'
+  } >"$f"
+  echo "$f"
+}
+
+# surface --json of FILE into $tmp/NAME.json.
+surface_of() {  # FILE NAME
+  run surface "$1" --json
+  expect_json_object
+  cp "$tmp/out" "$tmp/$2.json"
+}
+
 case $case_name in
   default_selection)
     run delaunay "$data/1fbl.pdb" --json
@@ -104,6 +125,53 @@ case $case_name in
       grep -q -- "$option" "$tmp/out" || fail "$option not in --help"
     done
     grep -q "ProtOr" "$tmp/out" || fail "radii not explained in --help"
+    ;;
+  empty_model)
+    # The default model is the first with atoms; an empty one is an error.
+    f=$(models_file)
+    run delaunay "$f" --json
+    expect_points 80
+    grep -qF "model 2 of 4: kept 80 of 80 atoms" "$tmp/err" || fail "model 2 not taken by default"
+    run delaunay "$f" --model 3 --json
+    expect_error "$f: model 3 has no atoms (models with atoms: 2, 4)"
+    ;;
+  same_chain_in_models)
+    # Chain A of model 4 is not chain A of model 2.
+    f=$(models_file)
+    run delaunay "$f" --model 4 --chains A --json
+    expect_points "$(awk '/^ATOM/ && substr($0, 23, 4) + 0 <= 6' "$data/catalog/peptide.pdb" | wc -l)"
+    run delaunay "$f" --model 2 --chains A --json
+    expect_points 80
+    ;;
+  duplicate_serials)
+    # Serial numbers only label atoms: every atom numbered 1 changes nothing.
+    surface_of "$data/catalog/peptide.pdb" pdb
+    sed -E 's/^(ATOM  ).{5}/\1    1/' "$data/catalog/peptide.pdb" >"$tmp/serials.pdb"
+    [[ $(grep -c '^ATOM      1 ' "$tmp/serials.pdb") -eq 80 ]] || fail "serials not all 1"
+    surface_of "$tmp/serials.pdb" serials_pdb
+    cmp -s "$tmp/pdb.json" "$tmp/serials_pdb.json" || fail "PDB serials changed the surface"
+    surface_of "$data/catalog/peptide.cif" cif
+    awk '/^ATOM / { $2 = 1 } { print }' "$data/catalog/peptide.cif" >"$tmp/serials.cif"
+    surface_of "$tmp/serials.cif" serials_cif
+    cmp -s "$tmp/cif.json" "$tmp/serials_cif.json" || fail "mmCIF _atom_site.id changed the surface"
+    ;;
+  mmcif_split_residue)
+    # Residues 7-12 of catalog/peptide.cif as chain B, then two waters of
+    # chain A; split: two atoms of residue A 1 moved after the waters. gemmi
+    # reads them as a third part of chain A whose first residue is a water,
+    # so they were taken for a hetero group and dropped.
+    awk '/^ATOM / && $14 >= 7 { $7 = "B"; $15 = "B" } { print }
+         END { print "HETATM 97 O O . HOH C . 0.0 0.0 20.0 1.00 0.00 101 A 1"
+               print "HETATM 98 O O . HOH C . 0.0 3.0 20.0 1.00 0.00 102 A 1" }' \
+      "$data/catalog/peptide.cif" >"$tmp/whole.cif"
+    awk '/^ATOM / && $14 == 1 && ($4 == "C" || $4 == "O") { moved = moved $0 "\n"; next } { print }
+         END { printf "%s", moved }' "$tmp/whole.cif" >"$tmp/split.cif"
+    [[ $(tail -n 1 "$tmp/split.cif" | awk '{print $4, $6, $14}') == "O GLY 1" ]] || fail "residue 1 not split"
+    surface_of "$tmp/whole.cif" whole
+    grep -qF "kept 80 of 82 atoms; dropped: 2 water" "$tmp/err" || fail "whole: not 80 atoms kept"
+    surface_of "$tmp/split.cif" split
+    grep -qF "kept 80 of 82 atoms; dropped: 2 water" "$tmp/err" || fail "split: not 80 atoms kept"
+    cmp -s "$tmp/whole.json" "$tmp/split.json" || fail "the split residue changed the surface"
     ;;
   point_file_with_structure_option)
     run delaunay "$data/cube_grid.xyz" --probe 1 --keep-waters --json

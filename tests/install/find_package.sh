@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The installed package: `cmake --install` into a temporary prefix, no GMP,
-# nlohmann, OpenMesh or gemmi in the installed headers, then README's "Use
-# from C++" example built there with find_package(alphapocket) and run, the
+# nlohmann, OpenMesh or gemmi in the installed headers, then the "Use
+# from C++" example of docs/library.md built there with find_package(alphapocket) and run, the
 # pkg-config file's version and flags, examples/'s programs built there
 # and run, and the Python module imported from the prefix.
 # Usage: find_package.sh BUILD_DIR REPO_ROOT
@@ -26,12 +26,12 @@ for h in $(cd "$tmp/prefix/include" && find . -name '*.hpp' | sort); do
 done
 g++ -std=c++20 -fsyntax-only -I"$tmp/prefix/include" "$tmp/all.cpp" || fail "installed headers do not compile alone"
 
-# README's example: its CMakeLists.txt and sites.cpp, built against the prefix.
+# docs/library.md's example: its CMakeLists.txt and sites.cpp, built against the prefix.
 mkdir "$tmp/sites"
-awk '/^## Use from C\+\+/{s=1} /^## /&&!/C\+\+/{s=0} s' "$root/README.md" >"$tmp/section.md"
+awk '/^## Use from C\+\+/{s=1} /^## /&&!/C\+\+/{s=0} s' "$root/docs/library.md" >"$tmp/section.md"
 awk '/^```cmake/{f=1;next} /^```/{f=0} f' "$tmp/section.md" >"$tmp/sites/CMakeLists.txt"
 awk '/^```cpp/{f=1;next} /^```/{f=0} f' "$tmp/section.md" >"$tmp/sites/sites.cpp"
-[[ -s $tmp/sites/CMakeLists.txt && -s $tmp/sites/sites.cpp ]] || fail "no cmake or cpp block in README's Use from C++"
+[[ -s $tmp/sites/CMakeLists.txt && -s $tmp/sites/sites.cpp ]] || fail "no cmake or cpp block in docs/library.md's Use from C++"
 cmake -S "$tmp/sites" -B "$tmp/sites/build" -G Ninja -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
 cmake --build "$tmp/sites/build" >/dev/null
 "$tmp/sites/build/sites" "$root/examples/data/1a26A.pdb" "$tmp/out" >"$tmp/stdout"
@@ -84,9 +84,11 @@ if compgen -G "$build/python/alphapocket/_core*.so" >/dev/null; then
   site=$(dirname "$(dirname "$init")")
   (cd "$tmp" && PYTHONPATH=$site /usr/bin/python3 -c "
 import alphapocket, sys
-assert alphapocket.__file__.startswith('$site'), alphapocket.__file__
+if not alphapocket.__file__.startswith('$site'):
+    sys.exit('imported from ' + alphapocket.__file__)
 a = alphapocket.analyze('$root/examples/data/1a26A.pdb', tunnels_from='none', outputs='all')
-assert a.to_json() == open('$tmp/cli/report.json').read()
+if a.to_json() != open('$tmp/cli/report.json').read():
+    sys.exit('to_json() differs from report.json')
 ") || fail "the installed Python module does not give report.json"
 fi
 echo PASS

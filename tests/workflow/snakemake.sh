@@ -49,6 +49,7 @@ same_tables() {  # DIR
   for t in "${tables[@]}"; do
     cmp -s "reference/$t" "$1/$t" || fail "$1/$t differs from one batch run's: $(diff "reference/$t" "$1/$t" | head -n 5)"
   done
+  [[ -s reference/alphapocket.sqlite && -s $1/alphapocket.sqlite ]] || fail "no alphapocket.sqlite in reference/ or $1"
   [[ $(sqlite3 reference/alphapocket.sqlite .dump) == $(sqlite3 "$1/alphapocket.sqlite" .dump) ]] ||
     fail "$1/alphapocket.sqlite differs from one batch run's"
 }

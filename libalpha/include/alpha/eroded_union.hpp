@@ -5,79 +5,9 @@
 // (solvent-excluded, Connolly) surface: the space a probe of radius r
 // rolling on the atoms cannot reach.
 //
-// Let U be the union (balls B_i, radii R_i >= r), F the closure of its
-// complement and L = U minus the eroded body: the layer of points within r
-// of F. Every point x of L has a nearest point q in F, on the boundary of
-// U, and lies on the segment from q along a normal of F at q, at distance
-// t <= r. The layer is split by the piece of the boundary q lies on
-// (Connolly's decomposition, kept exact where probe positions come closer
-// than 2r, the "singular" case):
-//  - a spherical patch of sphere i: x on the radius from q towards p_i.
-//    The ball of radius t about x lies inside B_i, so q is x's only nearest
-//    point and the whole shell between radii R_i - r and R_i under the
-//    patch belongs to it: volume A_i (R_i^3 - (R_i - r)^3) / (3 R_i^2),
-//    eroded face (contact patch) area A_i ((R_i - r) / R_i)^2, with A_i the
-//    patch's area (UnionOfBalls);
-//  - an arc of the circle where spheres i and j meet: x = q + t u with u in
-//    the wedge between the directions from q to p_i and p_j (toroidal);
-//  - a vertex where three spheres meet: u in the cone spanned by the
-//    directions to the three centres (reentrant spherical).
-// On arcs and vertices q stays x's nearest point only up to the cut
-// distance tau(q, u) <= r along the ray: beyond it some other point of F
-// (another probe position, the same torus past its axis) is nearer. tau
-// is found by bisection on the nearest-point test (no point of F strictly
-// nearer to x than t), which holds on an initial segment of the ray. With
-// rho the circle's radius and psi the angle of u from the circle's plane,
-// the layer's volume on an arc is the integral over the arc's angle phi
-// and psi of int_0^tau |rho - t cos psi| t dt, on a vertex the integral of
-// tau^3 / 3 over the cone's solid angle; the eroded surface is where
-// tau = r, with area elements |rho - r cos psi| r dpsi dphi and r^2 dOmega.
-//
-// Precision: the integrands are evaluated exactly in doubles (tau to
-// 1e-8 r); the integrals over phi and psi, and over a cone in geodesic
-// polar coordinates about a corner, are 8 x 8-node Gauss-Legendre products
-// (arc pieces of at most pi/4), and where tau = r starts or stops between
-// nodes the change is located by bisection. A piece whose 64 nodes all see
-// tau = r (no singularity) takes the closed form, exact to rounding. So a
-// small cut-off region that falls between the nodes of a piece counts
-// whole: on 1A26 chain A, testing on finer grids (arcs split 4 times finer
-// in phi and psi, cones cut into spherical triangles of 0.5 rad) moves the
-// volume by 8e-6 and the area by 2e-4 (relative). Tests: Monte Carlo on an
-// independent nearest-point test, the area against -d volume / d r.
-//
-// The boundary's pieces are read from the dual complex K (alpha_sq = 0):
-// circles of edges of K, clipped to the power facet by the edge's ring of
-// neighbours; vertices of triangles of K, kept where they lie on the
-// triangle's Voronoi edge. Where more than three spheres meet in a point
-// (degenerate input) several triangles give the same vertex; a direction
-// in two of their cones goes to the one of smaller triangle id.
-//
-// Per cell of the triangulation the layer is split by regions of space
-// (share_cell's rule): a patch's shell under the part of the patch in the
-// cell's cone at the sphere's centre (patch_area, closed form), an arc's
-// pieces by the cell's angular sector around the arc's edge, a vertex to
-// the cell on its side of its triangle. The totals are summed from the
-// same pieces; the finite cells' shares sum to them when no ball reaches
-// outside the convex hull.
-//
-// Per ball (layer(per_ball)), every point goes to the power cell holding
-// it, the rule of UnionOfBalls' per-ball area and volume: ball i gets the
-// layer's volume and the eroded surface's area inside its power cell P_i,
-// so the eroded body's volume in P_i is ball_volumes()[i] less its layer
-// share (never more than it, never negative but for the quadrature's
-// error), and these sum to the totals. The pieces are split without
-// touching the totals: a shell under a patch of sphere i lies in P_i when
-// p_i does (P_i is convex and holds the patch); else the part beyond a
-// radical plane passing behind p_i (a small ball beside a large one, as an
-// O on a C) goes to that neighbour, integrated over its latitude band in
-// closed-form arcs, and the same amount is taken from i. Toroidal and
-// reentrant pieces are integrated again ray by ray, psi (the cone) cut at
-// the power planes of their own balls, each ray cut where the power cell
-// changes along it (power differences are linear in t), and their totals
-// are divided in those proportions: exact sums, per-ball errors of the
-// quadrature (on 60 atoms of 1FKG: each atom's area equals minus the
-// derivative of its volume in r to 5e-3, its volume a Monte Carlo count by
-// power cell within 4.5 sigma).
+// How its volume and area are derived (Connolly's decomposition, kept exact
+// where probe positions come closer than 2r; the quadrature and its
+// precision; the split per cell and per ball): docs/eroded_union.md.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -169,15 +169,16 @@ struct Cavities {
   std::vector<Cavity> pockets;  // ranked: best first
   std::vector<Cavity> voids;    // ranked: best first
   std::vector<Tunnel> tunnels;  // by decreasing death_alpha_sq (widest bottleneck first)
-  // Where a ligand may bind, best first: every pocket, and every void whose
-  // sa_volume reaches kLigandSiteVolume, in one ranking by score (ties:
-  // pockets first, then each list's order). A ligand in a pocket may
+  // Where a ligand may bind, best first: every pocket, and every void that
+  // holds a ligand (holds_ligand: a drug-sized ligand's free space or a
+  // small ligand's MS volume), in one ranking by score (ties: pockets
+  // first, then each list's order). A ligand in a pocket may
   // reach out through its mouths, so a pocket of any size can be a site;
   // an enclosed cavity must hold the whole ligand, and smaller voids are
   // packing defects and water sites. Holo structures often close a lid over
   // their ligand, so a site can be a void once the ligand is removed.
-  // (search_pockets leaves out the sites of a low probability and may rank
-  // the others by probability instead.)
+  // (search_pockets leaves out the pockets of a low probability and may
+  // rank the sites by probability instead.)
   std::vector<Site> sites;
 
   const Cavity& cavity(const Site& site) const { return (site.is_void ? voids : pockets).at(site.index); }
@@ -189,9 +190,22 @@ struct Cavities {
 // volume cap, the size rule's default and the smallest void that is a site.
 inline constexpr double kLigandSiteVolume = 150;
 
-// The cavities that can be sites (Cavities::sites before any is left
-// out): every pocket, then every void of at least kLigandSiteVolume, each
-// list in its order.
+// Molecular-surface volume (A^3) of the smallest void that holds a ligand
+// of about six heavy atoms: benzene in T4 lysozyme L99A (PDB 181L) fills a
+// void of 209 A^3 MS volume that has only 17.9 A^3 of free (sa_volume)
+// space, far below kLigandSiteVolume. On the training data such voids are
+// rare (docs/ranking.md).
+inline constexpr double kLigandVoidVolume = 150;
+
+// Whether a void can hold a ligand: sa_volume of at least
+// kLigandSiteVolume (a drug-sized ligand) or ms_volume of at least
+// kLigandVoidVolume (a small one). Such a void is a site whatever its
+// probability (search_pockets), ranked with the pockets.
+bool holds_ligand(const Cavity& void_cavity);
+
+// The cavities the ligandability model compares a site with (its context,
+// molecule/site_features.hpp): every pocket, then every void of at least
+// kLigandSiteVolume, each list in its order.
 std::vector<Site> site_candidates(const Cavities& cavities);
 
 struct CavityOptions {

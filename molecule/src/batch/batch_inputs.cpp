@@ -30,7 +30,7 @@ void add_directory(const fs::path& dir, std::vector<std::string>& out) {
     if (it->is_regular_file(type) && is_structure_file(it->path().filename().string()))
       found.push_back(it->path().lexically_normal().string());
   }
-  if (ec) alpha::fail(dir.string() + ": cannot search the directory: " + ec.message());
+  if (ec) alpha::fail(dir.string() + ": cannot search the directory: " + ec.message(), alpha::ErrorKind::BadInput);
   std::sort(found.begin(), found.end());
   out.insert(out.end(), found.begin(), found.end());
 }
@@ -52,15 +52,16 @@ std::vector<std::string> read_path_list(std::istream& in, const std::string& nam
     if (p.is_relative() && !base_dir.empty()) p = fs::path(base_dir) / p;
     out.push_back(p.lexically_normal().string());
   }
-  if (in.bad()) alpha::fail(name + ": cannot read the list");
+  if (in.bad()) alpha::fail(name + ": cannot read the list", alpha::ErrorKind::BadInput);
   return out;
 }
 
 std::vector<std::string> read_path_list_file(const std::string& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory, not a list of paths");
+  if (fs::is_directory(path, ec))
+    alpha::fail(path + ": is a directory, not a list of paths", alpha::ErrorKind::BadInput);
   std::ifstream in(path);
-  if (!in) alpha::fail(path + ": cannot open the list");
+  if (!in) alpha::fail(path + ": cannot open the list", alpha::ErrorKind::BadInput);
   const bool dataset = fs::path(path).extension() == ".ds";
   const std::string base = dataset ? fs::path(path).parent_path().string() : std::string();
   return read_path_list(in, path, dataset, base);
@@ -76,7 +77,8 @@ std::vector<BatchInput> batch_inputs(const std::vector<std::string>& paths) {
       files.push_back(fs::path(path).lexically_normal().string());
     else
       alpha::fail(path + (fs::exists(path, ec) ? ": not a structure file (.pdb .ent .cif .mmcif, optionally .gz)"
-                                               : ": no such file or directory"));
+                                               : ": no such file or directory"),
+                  alpha::ErrorKind::BadInput);
   }
   std::vector<BatchInput> out;
   for (std::string& f : files) out.push_back({structure_id(f), std::move(f)});
@@ -87,7 +89,8 @@ std::vector<BatchInput> batch_inputs(const std::vector<std::string>& paths) {
             out.end());
   for (std::size_t i = 1; i < out.size(); ++i)
     if (out[i].id == out[i - 1].id)
-      alpha::fail("two inputs with the structure id '" + out[i].id + "': " + out[i - 1].path + " and " + out[i].path);
+      alpha::fail("two inputs with the structure id '" + out[i].id + "': " + out[i - 1].path + " and " + out[i].path,
+                  alpha::ErrorKind::BadInput);
   return out;
 }
 

@@ -33,10 +33,11 @@ BatchRecord parse_record(std::string_view line) {
     r.message = j.at("message");
     r.seconds = j.at("seconds");
     r.rows = j.at("rows");
-    if (r.id.empty() || (r.status == "ok") == r.rows.is_null()) alpha::fail("inconsistent record");
+    if (r.id.empty() || (r.status == "ok") == r.rows.is_null())
+      alpha::fail("inconsistent record", alpha::ErrorKind::BadInput);
     return r;
   } catch (const std::exception& e) {
-    alpha::fail(std::string("malformed record: ") + e.what());
+    alpha::fail(std::string("malformed record: ") + e.what(), alpha::ErrorKind::BadInput);
   }
 }
 

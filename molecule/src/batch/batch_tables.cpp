@@ -12,9 +12,6 @@
 #include "alpha/error.hpp"
 #include "util/atomic_file.hpp"
 #include "outputs/tables.hpp"
-#include "batch/batch_page.hpp"
-#include "outputs/report_assets.hpp"
-#include "alphapocket/version.hpp"
 
 namespace molecule {
 namespace {
@@ -27,7 +24,7 @@ const char* sql_type(ColumnType t) {
 }
 
 [[noreturn]] void sqlite_fail(sqlite3* db, const std::string& what) {
-  alpha::fail(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"));
+  alpha::fail(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"), alpha::ErrorKind::BadInput);
 }
 
 // One table's output: its text file and its prepared INSERT.
@@ -38,7 +35,8 @@ public:
         target_((dir / (std::string(table.name) + (tsv_ ? ".tsv" : ".csv"))).string()), tmp_(target_, temporaries),
         db_(db) {
     out_.open(tmp_.path(), std::ios::binary | std::ios::trunc);
-    if (!out_) alpha::fail(target_ + ": cannot write " + tmp_.path() + ": " + std::strerror(errno));
+    if (!out_)
+      alpha::fail(target_ + ": cannot write " + tmp_.path() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
     std::string create = "CREATE TABLE " + std::string(table.name) + " (";
     std::string insert = "INSERT INTO " + std::string(table.name) + " VALUES (";
     for (std::size_t i = 0; i < table.columns.size(); ++i) {
@@ -58,7 +56,8 @@ public:
   void add(const json& row) {
     if (row.size() != table_.columns.size())
       alpha::fail(std::string(table_.name) + ": a record's row has " + std::to_string(row.size()) +
-                  " values, the table " + std::to_string(table_.columns.size()) + " columns");
+                      " values, the table " + std::to_string(table_.columns.size()) + " columns",
+                  alpha::ErrorKind::BadInput);
     sqlite3_reset(insert_);
     for (std::size_t i = 0; i < row.size(); ++i) {
       const json& v = row[i];
@@ -83,7 +82,7 @@ public:
     sqlite3_finalize(insert_);
     insert_ = nullptr;
     out_.close();
-    if (!out_) alpha::fail(target_ + ": cannot write " + tmp_.path());
+    if (!out_) alpha::fail(target_ + ": cannot write " + tmp_.path(), alpha::ErrorKind::BadInput);
   }
   void commit() { tmp_.commit(); }
 
@@ -101,7 +100,8 @@ std::string read_line_at(std::ifstream& in, std::uint64_t offset, const std::str
   in.clear();
   in.seekg(std::streamoff(offset));
   std::string line;
-  if (!std::getline(in, line)) alpha::fail(file + ": cannot read the record at byte " + std::to_string(offset));
+  if (!std::getline(in, line))
+    alpha::fail(file + ": cannot read the record at byte " + std::to_string(offset), alpha::ErrorKind::BadInput);
   return line;
 }
 
@@ -109,7 +109,7 @@ std::string read_line_at(std::ifstream& in, std::uint64_t offset, const std::str
 
 RecordAppender::RecordAppender(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "a+b");
-  if (!file_) alpha::fail(path + ": cannot open for appending: " + std::strerror(errno));
+  if (!file_) alpha::fail(path + ": cannot open for appending: " + std::strerror(errno), alpha::ErrorKind::BadInput);
   if (std::fseek(file_, -1, SEEK_END) == 0 && std::fgetc(file_) != '\n') {  // a partial last line
     std::fseek(file_, 0, SEEK_END);
     std::fputc('\n', file_);
@@ -124,7 +124,7 @@ void RecordAppender::append(const BatchRecord& record) {
   const std::lock_guard<std::mutex> lock(mutex_);
   std::fseek(file_, 0, SEEK_END);
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0)
-    alpha::fail(path_ + ": cannot append a record: " + std::strerror(errno));
+    alpha::fail(path_ + ": cannot append a record: " + std::strerror(errno), alpha::ErrorKind::BadInput);
 }
 
 std::map<std::string, RecordLocation> index_records(const std::vector<std::string>& files, std::size_t* malformed) {
@@ -148,7 +148,8 @@ std::map<std::string, RecordLocation> index_records(const std::vector<std::strin
       }
       const auto [it, fresh] = owner.emplace(r.id, f);
       if (!fresh && it->second != f)
-        alpha::fail("structure id '" + r.id + "' is in both " + files[it->second] + " and " + files[f]);
+        alpha::fail("structure id '" + r.id + "' is in both " + files[it->second] + " and " + files[f],
+                    alpha::ErrorKind::BadInput);
       out[r.id] = {f, at, r.path, r.checksum, r.key, r.status, r.category};
     }
   }
@@ -164,7 +165,7 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
   sqlite3* db = nullptr;
   if (sqlite3_open(db_tmp.path().c_str(), &db) != SQLITE_OK) {
     sqlite3_close(db);
-    alpha::fail(db_target + ": cannot create the database");
+    alpha::fail(db_target + ": cannot create the database", alpha::ErrorKind::BadInput);
   }
   std::unique_ptr<sqlite3, int (*)(sqlite3*)> db_guard(db, sqlite3_close);
   if (sqlite3_exec(db, "PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF; BEGIN", nullptr, nullptr, nullptr) !=
@@ -184,26 +185,11 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
   std::vector<std::ifstream> in;
   for (const std::string& f : files) in.emplace_back(f, std::ios::binary);
 
-  // index.html when its viewer files are there (report_assets.hpp).
-  std::vector<std::pair<std::string, std::string>> viewer;
-  if (missing_viewer_assets().empty()) viewer = viewer_files();
-  const auto names = [](const Table& t) {
-    std::vector<std::string> out;
-    for (const Column& c : t.columns) out.push_back(c.name);
-    return out;
-  };
-  std::vector<std::string> numeric;
-  for (const Table* t : {&kStructuresTable, &kSitesTable})
-    for (const Column& c : t->columns)
-      if (c.type != ColumnType::Text) numeric.push_back(c.name);
-  BatchPage page(names(kStructuresTable), names(kSitesTable), names(kFailuresTable), numeric);
-
   for (const auto& [id, where] : locations) {
     const std::string line = read_line_at(in.at(where.file), where.offset, files[where.file]);
     const BatchRecord r = parse_record(line);
     records << line << '\n';
     json row = json::array({r.id, r.path, r.status});
-    std::vector<json> site_rows;
     if (r.status == "ok") {
       for (const json& v : r.rows.at("structure")) row.push_back(v);
       for (const char* key : {"sites", "tunnels"})
@@ -211,44 +197,24 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
           json full = json::array({r.id});
           for (const json& v : values) full.push_back(v);
           (key == std::string("sites") ? sites : tunnels).add(full);
-          if (key == std::string("sites") && !viewer.empty()) site_rows.push_back(std::move(full));
         }
     } else {
       while (row.size() < kStructuresTable.columns.size()) row.push_back(nullptr);
-      const json failure = json::array({r.id, r.path, r.category, r.message});
-      failures.add(failure);
-      if (!viewer.empty()) page.add_failure(failure);
+      failures.add(json::array({r.id, r.path, r.category, r.message}));
     }
     structures.add(row);
-    std::error_code ec;
-    if (!viewer.empty()) page.add_structure(row, site_rows, fs::exists(dir / r.id / "report.html", ec));
   }
 
   for (auto& t : tables) t->finish();
   if (sqlite3_exec(db, "COMMIT", nullptr, nullptr, nullptr) != SQLITE_OK) sqlite_fail(db, db_target);
-  if (sqlite3_close(db_guard.release()) != SQLITE_OK) alpha::fail(db_target + ": cannot close the database");
+  if (sqlite3_close(db_guard.release()) != SQLITE_OK)
+    alpha::fail(db_target + ": cannot close the database", alpha::ErrorKind::BadInput);
   records.close();
-  if (!records) alpha::fail(records_target + ": cannot write " + records_tmp.path());
-  std::vector<std::unique_ptr<TemporaryFile>> pages;
-  const auto page_file = [&](const fs::path& target, const std::string& content) {
-    pages.push_back(std::make_unique<TemporaryFile>(target.string(), temporaries));
-    std::ofstream out(pages.back()->path(), std::ios::binary | std::ios::trunc);
-    out << content;
-    out.close();
-    if (!out) alpha::fail(target.string() + ": cannot write " + pages.back()->path());
-  };
-  if (!viewer.empty()) {
-    std::error_code ec;
-    fs::create_directories(dir / kViewerDir, ec);
-    if (ec) alpha::fail((dir / kViewerDir).string() + ": cannot create it: " + ec.message());
-    for (const auto& [name, bytes] : viewer) page_file(dir / kViewerDir / name, bytes);
-    page_file(dir / "index.html", page.html(alphapocket::kVersion));
-  }
+  if (!records) alpha::fail(records_target + ": cannot write " + records_tmp.path(), alpha::ErrorKind::BadInput);
   // Everything is complete: into place, the records last (they are what a
   // re-run trusts).
   db_tmp.commit();
   for (auto& t : tables) t->commit();
-  for (auto& p : pages) p->commit();
   records_tmp.commit();
 }
 

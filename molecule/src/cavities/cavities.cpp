@@ -355,7 +355,10 @@ private:
 
 // Cavities::sites, from the ranked pockets and voids.
 std::vector<Site> rank_sites(const Cavities& cavities) {
-  std::vector<Site> sites = site_candidates(cavities);
+  std::vector<Site> sites;
+  for (std::size_t i = 0; i < cavities.pockets.size(); ++i) sites.push_back({false, i, cavities.pockets[i].center});
+  for (std::size_t i = 0; i < cavities.voids.size(); ++i)
+    if (holds_ligand(cavities.voids[i])) sites.push_back({true, i, cavities.voids[i].center});
   std::stable_sort(sites.begin(), sites.end(), [&](const Site& a, const Site& b) {
     return cavities.cavity(a).score > cavities.cavity(b).score;
   });
@@ -363,6 +366,10 @@ std::vector<Site> rank_sites(const Cavities& cavities) {
 }
 
 }  // namespace
+
+bool holds_ligand(const Cavity& void_cavity) {
+  return void_cavity.sa_volume >= kLigandSiteVolume || void_cavity.ms_volume >= kLigandVoidVolume;
+}
 
 std::vector<Site> site_candidates(const Cavities& cavities) {
   std::vector<Site> sites;

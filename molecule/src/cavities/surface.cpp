@@ -27,7 +27,7 @@ Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, s
     alpha::fail("surface: " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
                     " balls",
                 alpha::ErrorKind::Misuse);
-  if (points.empty()) alpha::fail("surface: no balls");
+  if (points.empty()) alpha::fail("surface: no balls", alpha::ErrorKind::BadInput);
   Surface s;
   s.balls = points.size();
   auto start = std::chrono::steady_clock::now();

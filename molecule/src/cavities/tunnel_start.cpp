@@ -25,8 +25,9 @@ bool number(const std::string& s, double& x) {
 
 TunnelStart site_start(const Cavities& cavities, std::size_t rank) {
   if (rank < 1 || rank > cavities.sites.size())
-    throw alpha::Error("--tunnels-from " + std::to_string(rank) + ": there are " +
-                       std::to_string(cavities.sites.size()) + " sites");
+    throw alpha::Error(
+        "--tunnels-from " + std::to_string(rank) + ": there are " + std::to_string(cavities.sites.size()) + " sites",
+        alpha::ErrorKind::BadInput);
   return {"site " + std::to_string(rank), cavities.cavity(cavities.sites[rank - 1]).cells, {}};
 }
 
@@ -53,12 +54,14 @@ std::vector<TunnelStart> tunnel_starts(const std::string& spec, const Structure&
       std::size_t found = 0;
       for (const Atom& a : structure.atoms)
         if (a.chain + ':' + std::to_string(a.seq_num) + icode_text(a.icode) == r) sum = sum + a.position, ++found;
-      if (found == 0) throw alpha::Error("--tunnels-from " + spec + ": no atom of residue " + r);
+      if (found == 0)
+        throw alpha::Error("--tunnels-from " + spec + ": no atom of residue " + r, alpha::ErrorKind::BadInput);
       n += found;
     }
     out.push_back({spec, {}, (1.0 / double(n)) * sum});
   } else {
-    throw alpha::Error("--tunnels-from " + spec + ": expected auto, none, a site rank, residues (A:45,A:67) or x,y,z");
+    throw alpha::Error("--tunnels-from " + spec + ": expected auto, none, a site rank, residues (A:45,A:67) or x,y,z",
+                       alpha::ErrorKind::BadInput);
   }
   return out;
 }

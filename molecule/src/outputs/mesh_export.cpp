@@ -58,9 +58,10 @@ const Format* find_format(const std::string& path) {
 
 const Format* checked_format(const std::string& path) {
   const Format* format = find_format(path);
-  if (!format) alpha::fail(path + ": unknown mesh format (expected .ply, .obj, .off or .stl)");
+  if (!format)
+    alpha::fail(path + ": unknown mesh format (expected .ply, .obj, .off or .stl)", alpha::ErrorKind::BadInput);
   std::error_code ec;
-  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
+  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory", alpha::ErrorKind::BadInput);
   return format;
 }
 
@@ -92,17 +93,20 @@ void check_input(const std::string& path, const TriangleMesh& in) {
   const std::size_t n = in.points.size();
   if (!in.face_colors.empty() && in.face_colors.size() != in.triangles.size())
     alpha::fail(path + ": " + std::to_string(in.face_colors.size()) + " face colours for " +
-                std::to_string(in.triangles.size()) + " triangles");
+                    std::to_string(in.triangles.size()) + " triangles",
+                alpha::ErrorKind::BadInput);
   if ((!in.vertex_colors.empty() && in.vertex_colors.size() != n) || (!in.vertex_sites.empty() && in.vertex_sites.size() != n))
-    alpha::fail(path + ": vertex colours or sites do not match the " + std::to_string(n) + " points");
+    alpha::fail(path + ": vertex colours or sites do not match the " + std::to_string(n) + " points",
+                alpha::ErrorKind::BadInput);
   for (std::size_t f = 0; f < in.triangles.size(); ++f) {
     const auto& t = in.triangles[f];
     for (alpha::Index v : t)
       if (v >= n)
-        alpha::fail(path + ": triangle " + std::to_string(f) + " uses point " + std::to_string(v) + " of " +
-                    std::to_string(n));
+        alpha::fail(
+            path + ": triangle " + std::to_string(f) + " uses point " + std::to_string(v) + " of " + std::to_string(n),
+            alpha::ErrorKind::BadInput);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-      alpha::fail(path + ": triangle " + std::to_string(f) + " repeats a vertex");
+      alpha::fail(path + ": triangle " + std::to_string(f) + " repeats a vertex", alpha::ErrorKind::BadInput);
   }
 }
 
@@ -296,7 +300,8 @@ Mesh build_mesh(const std::string& path, const TriangleMesh& in, const OpenMesh:
     if (!fh.is_valid()) {  // still refused (not seen so far): a separate triangle
       const auto& t = in.triangles[f];
       fh = mesh.add_face(add_vertex(t[0]), add_vertex(t[1]), add_vertex(t[2]));
-      if (!fh.is_valid()) alpha::fail(path + ": OpenMesh refused triangle " + std::to_string(f));
+      if (!fh.is_valid())
+        alpha::fail(path + ": OpenMesh refused triangle " + std::to_string(f), alpha::ErrorKind::BadInput);
     }
     if (face_colors) {
       const Rgb& c = in.face_colors[f];
@@ -447,7 +452,7 @@ MeshFileContent mesh_file_content(const std::string& path, const TriangleMesh& m
     const QuietOpenMesh quiet;
     const Mesh om = build_mesh(path, mesh, options, info);
     if (!OpenMesh::IO::write_mesh(om, out, std::string(".") + format->name, options, kAsciiPrecision) || !out)
-      alpha::fail(path + ": write error (" + format->name + ")");
+      alpha::fail(path + ": write error (" + format->name + ")", alpha::ErrorKind::BadInput);
   }
   file.bytes = std::move(out).str();
   return file;

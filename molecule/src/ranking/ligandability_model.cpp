@@ -17,7 +17,9 @@ extern const char* const kLigandabilityModelJson;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { alpha::fail("ligandability model: " + what); }
+[[noreturn]] void fail(const std::string& what) {
+  alpha::fail("ligandability model: " + what, alpha::ErrorKind::BadInput);
+}
 
 // Reads the JSON a model file is: objects, arrays, strings without escapes
 // and numbers. Not nlohmann's parser: its document of a bagged model's

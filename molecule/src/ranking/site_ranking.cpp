@@ -21,7 +21,10 @@ void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking) 
       c.ligandability = model.margin(features(c));
       c.probability = model.probability(c.ligandability);
     }
-  std::erase_if(cav.sites, [&](const Site& s) { return !(cav.cavity(s).probability >= kMinSiteProbability); });
+  // A void that holds a ligand is a site whatever its probability: the
+  // model ranks it, the rule keeps it.
+  std::erase_if(cav.sites,
+                [&](const Site& s) { return !s.is_void && !(cav.cavity(s).probability >= kMinSiteProbability); });
   if (ranking == SiteRanking::probability) {
     std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
       return cav.cavity(a).ligandability > cav.cavity(b).ligandability;

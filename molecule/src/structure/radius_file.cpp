@@ -63,7 +63,7 @@ RadiusFile parse_radius_file(std::string_view text, const std::string& path) {
     if (!hole && (key == "BOND" || key.rfind("REMARK", 0) == 0)) continue;
     const std::size_t expected = hole ? 4 : 3;
     const auto fail = [&](const std::string& problem) {
-      throw alpha::Error(path + ": line " + std::to_string(number) + ": " + problem);
+      throw alpha::Error(path + ": line " + std::to_string(number) + ": " + problem, alpha::ErrorKind::BadInput);
     };
     if (f.size() != expected)
       fail(hole ? "expected VDWR ATOM RESIDUE RADIUS" : "expected RESIDUE ATOM RADIUS or element SYMBOL RADIUS");
@@ -88,7 +88,7 @@ RadiusFile parse_radius_file(std::string_view text, const std::string& path) {
 
 RadiusFile read_radius_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw alpha::Error(path + ": cannot read the radius file");
+  if (!in) throw alpha::Error(path + ": cannot read the radius file", alpha::ErrorKind::BadInput);
   std::ostringstream text;
   text << in.rdbuf();
   return parse_radius_file(text.str(), path);

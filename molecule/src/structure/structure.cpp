@@ -14,6 +14,7 @@
 #include <optional>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 #include <sstream>
 
 #include <gemmi/cif.hpp>
@@ -131,6 +132,12 @@ void for_each_line(std::string_view text, Fn fn) {
   }
 }
 
+// END, which ends a PDB file's records (ENDMDL does not).
+bool is_end_record(std::string_view line) {
+  return line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
+         (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3])));
+}
+
 // Far beyond any structure (the largest assemblies span some 1e4 A), so a
 // coordinate beyond it is a broken file.
 constexpr double kMaxCoordinate = 1e6;
@@ -144,11 +151,16 @@ using UnknownElements = std::map<std::string, std::size_t>;
 // a word, and rejects a bad charge without a line number, so the records it
 // reads are checked here first: those starting with ATOM or HETA in any
 // case, up to an END record. `old_columns`: columns 73-80 are not read.
+// A file cut short (an interrupted download or copy) ends without a line
+// end inside a record: its last ATOM or HETATM record, with no line end, is
+// then shorter than every other one, as a file's writer gives them one
+// length (80 columns, or fewer when it drops trailing blanks). A cut at a
+// line end cannot be told from a whole file: END is optional.
 void check_pdb_records(std::string_view text, const std::string& name, bool old_columns, UnknownElements& unknown) {
+  const std::size_t last_line = (text.back() == '\n' || text.back() == '\r') ? text.size() : text.rfind('\n') + 1;  // npos + 1 = 0
+  std::size_t shortest = 0;                                                              // of the atom records
   for_each_line(text, [&](std::size_t line_number, std::string_view line) {
-    if (line.size() >= 3 && equals_ci(line.substr(0, 3), "end") &&
-        (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3]))))
-      return false;
+    if (is_end_record(line)) return false;
     const auto error = [&](const std::string& what) {
       fail(name, "line " + std::to_string(line_number) + ": " + what);
     };
@@ -167,6 +179,10 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
     const bool atom = equals_ci(line.substr(0, 4), "atom");
     if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
     const std::string_view record = atom ? "ATOM" : "HETATM";
+    if (line.data() == text.data() + last_line && line.size() < shortest)
+      error(std::string(record) + " record cut short by the end of the file (" + std::to_string(line.size()) +
+            " columns and no line end, the others have " + std::to_string(shortest) + " or more): truncated file");
+    shortest = shortest ? std::min(shortest, line.size()) : line.size();
     if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
     if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
       error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
@@ -187,6 +203,31 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
             "')");
     return true;
   });
+}
+
+// Whether the ATOM or HETATM records of some residue are not together: a
+// residue met again after another residue's records in the same model. A
+// residue as gemmi tells them apart: name, chain, number, insertion code
+// (columns 18-27) and segment (73-76, unless `old_columns`).
+bool has_scattered_residues(std::string_view text, bool old_columns) {
+  bool found = false;
+  std::unordered_set<std::string> seen;  // the residues of the model so far
+  std::string current;
+  for_each_line(text, [&](std::size_t, std::string_view line) {
+    if (is_end_record(line)) return false;
+    if (equals_ci(line.substr(0, 6), "model ") || equals_ci(line.substr(0, 6), "endmdl")) {
+      seen.clear();
+      current.clear();
+    }
+    if (!equals_ci(line.substr(0, 4), "atom") && !equals_ci(line.substr(0, 4), "heta")) return true;
+    std::string residue(line.substr(17, 10));
+    if (!old_columns && line.size() > 72) residue += trimmed(line.substr(72, 4));
+    if (residue == current) return true;
+    found = !seen.insert(residue).second;
+    current = std::move(residue);
+    return !found;
+  });
+  return found;
 }
 
 // Columns 73-80 of the PDB format before 1996 (e.g. HOLE's gramicidin,
@@ -377,12 +418,107 @@ std::vector<std::string> missing_atom_site_columns(gemmi::cif::Block& block) {
   return missing;
 }
 
-bool has_atoms(const gemmi::Structure& st) {
-  for (const gemmi::Model& m : st.models)
-    for (const gemmi::Chain& c : m.chains)
-      for (const gemmi::Residue& r : c.residues)
-        if (!r.atoms.empty()) return true;
+int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid.num : 0; }
+
+// Whether a residue has atoms in two parts of a chain of one model: gemmi
+// starts a new part at each change of chain id among the records.
+bool has_split_residues(const gemmi::Structure& st) {
+  for (const gemmi::Model& m : st.models) {
+    std::unordered_map<std::string, std::unordered_set<gemmi::ResidueId>> residues;  // by chain
+    for (const gemmi::Chain& part : m.chains) {
+      std::unordered_set<gemmi::ResidueId>& seen = residues[part.name];
+      for (const gemmi::Residue& r : part.residues)  // gemmi joins those within a part
+        if (!seen.insert(r).second) return true;
+    }
+  }
   return false;
+}
+
+// Types the residues of a chain that the file left untyped (no TER record
+// after them, no mmCIF entity): water by name, polymer if gemmi counts it
+// as a residue of the polymer type of the chain's residues from ATOM
+// records (of all but waters if none), else neither. Unlike gemmi's
+// add_entity_types, which counts every residue (so that a dozen waters hide
+// a peptide) and ends the polymer at the first residue that does not fit
+// it, this depends on no order.
+void type_residues(gemmi::Chain& chain) {
+  std::vector<gemmi::Residue>& residues = chain.residues;
+  const auto untyped = [](const gemmi::Residue& r) { return r.entity_type == gemmi::EntityType::Unknown; };
+  if (std::none_of(residues.begin(), residues.end(), untyped)) return;
+  const auto counted = [&](bool atom_records) {
+    std::vector<gemmi::Residue> some;  // moved out and back: gemmi counts a contiguous span
+    std::vector<std::size_t> from;
+    for (std::size_t i = 0; i < residues.size(); ++i)
+      if (!residues[i].is_water() && (!atom_records || residues[i].het_flag == 'A')) {
+        from.push_back(i);
+        some.push_back(std::move(residues[i]));
+      }
+    const gemmi::PolymerType type = gemmi::check_polymer_type(gemmi::ConstResidueSpan(some.data(), some.size()));
+    for (std::size_t k = 0; k < some.size(); ++k) residues[from[k]] = std::move(some[k]);
+    return std::make_pair(type, !some.empty());
+  };
+  auto [type, any] = counted(true);
+  if (!any) type = counted(false).first;
+  for (gemmi::Residue& r : residues)
+    if (untyped(r))
+      r.entity_type = r.is_water() ? gemmi::EntityType::Water
+                      : gemmi::is_polymer_residue(r, type) ? gemmi::EntityType::Polymer
+                                                           : gemmi::EntityType::NonPolymer;
+}
+
+// For a file whose residues' records are not together (as written from a
+// selection or a merge): in each model, the parts of a chain joined into
+// one and the pieces of a residue into one, by identity (name, number,
+// insertion code, segment), polymer residues first, then others, then
+// waters, each by number. `retype`: the types gemmi took from TER records
+// are dropped (their places mean nothing then) and all residues typed by
+// type_residues; otherwise only those the file left untyped (mmCIF
+// entities are kept).
+void regroup_residues(gemmi::Structure& st, bool retype) {
+  const auto rank = [](const gemmi::Residue& r) {
+    return r.entity_type == gemmi::EntityType::Polymer ? 0 : r.entity_type == gemmi::EntityType::Water ? 2 : 1;
+  };
+  for (gemmi::Model& m : st.models) {
+    std::vector<gemmi::Chain> chains;  // in order of first appearance
+    std::vector<std::unordered_map<gemmi::ResidueId, std::size_t>> index;
+    for (gemmi::Chain& part : m.chains) {
+      auto c = std::find_if(chains.begin(), chains.end(), [&](const gemmi::Chain& x) { return x.name == part.name; });
+      if (c == chains.end()) {
+        c = chains.insert(chains.end(), gemmi::Chain(part.name));
+        index.emplace_back();
+      }
+      gemmi::Chain& chain = *c;
+      for (gemmi::Residue& r : part.residues) {
+        const auto [at, added] = index[std::size_t(c - chains.begin())].emplace(r, chain.residues.size());
+        if (added) {
+          chain.residues.push_back(std::move(r));
+          continue;
+        }
+        gemmi::Residue& same = chain.residues[at->second];
+        same.atoms.insert(same.atoms.end(), r.atoms.begin(), r.atoms.end());
+        if (r.het_flag == 'A') same.het_flag = 'A';  // from ATOM records if any piece is
+      }
+    }
+    for (gemmi::Chain& chain : chains) {
+      if (retype)
+        for (gemmi::Residue& r : chain.residues) r.entity_type = gemmi::EntityType::Unknown;
+      type_residues(chain);
+      std::stable_sort(chain.residues.begin(), chain.residues.end(), [&](const gemmi::Residue& a, const gemmi::Residue& b) {
+        return std::make_tuple(rank(a), seq_num(a), a.seqid.icode) < std::make_tuple(rank(b), seq_num(b), b.seqid.icode);
+      });
+    }
+    m.chains = std::move(chains);
+  }
+}
+
+bool has_atoms(const gemmi::Model& m) {
+  return std::any_of(m.chains.begin(), m.chains.end(), [](const gemmi::Chain& c) {
+    return std::any_of(c.residues.begin(), c.residues.end(), [](const gemmi::Residue& r) { return !r.atoms.empty(); });
+  });
+}
+
+bool has_atoms(const gemmi::Structure& st) {
+  return std::any_of(st.models.begin(), st.models.end(), [](const gemmi::Model& m) { return has_atoms(m); });
 }
 
 // `old_columns`: a PDB file whose columns 73-80 are not read.
@@ -398,16 +534,19 @@ gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const st
       gemmi::PdbReadOptions pdb_options;
       if (old_columns) pdb_options.max_line_length = 72;
       st = gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_options);
+      if (has_scattered_residues(text, old_columns)) regroup_residues(st, /*retype=*/true);
     } else {
       gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
       check_atom_site(doc.blocks.at(0), text, name, unknown);
       st = gemmi::make_structure(doc);
+      if (has_split_residues(st)) regroup_residues(st, /*retype=*/false);
       *local_plddt = doc.blocks.at(0).find_mmcif_category("_ma_qa_metric_local.").ok();
       if (!has_atoms(st)) missing = missing_atom_site_columns(doc.blocks.at(0));
     }
     // Polymer, water or neither, where the file does not say (PDB files
     // without TER records).
-    gemmi::add_entity_types(st, /*overwrite=*/false);
+    for (gemmi::Model& m : st.models)
+      for (gemmi::Chain& c : m.chains) type_residues(c);
   } catch (const std::exception& e) {
     throw StructureError(one_line(e.what(), name));
   }
@@ -446,8 +585,6 @@ bool is_ligand(const gemmi::Residue& r, bool chain_has_atom_records) {
 }
 
 char no_blank(char c) { return c == ' ' ? '\0' : c; }
-
-int seq_num(const gemmi::Residue& r) { return r.seqid.num.has_value() ? *r.seqid.num : 0; }
 
 // The altloc kept for a group of residues with one sequence number: the
 // highest mean occupancy, ties to the smallest letter (not the first in the
@@ -643,13 +780,19 @@ int model_number(const gemmi::Model& m) {
   return n;
 }
 
+// Model 0 is the first model with atoms (a PDB file may have empty ones).
 const gemmi::Model& select_model(const gemmi::Structure& st, int model, const std::string& name) {
   if (model < 0) fail(name, "invalid model number " + std::to_string(model));
-  if (model == 0) return st.models.front();
-  for (const gemmi::Model& m : st.models)
-    if (model_number(m) == model) return m;
-  std::vector<std::string> names;
-  for (const gemmi::Model& m : st.models) names.push_back(m.name);
+  if (model == 0)
+    return *std::find_if(st.models.begin(), st.models.end(), [](const gemmi::Model& m) { return has_atoms(m); });
+  std::vector<std::string> names, with_atoms;
+  for (const gemmi::Model& m : st.models) {
+    if (model_number(m) == model && has_atoms(m)) return m;
+    names.push_back(m.name);
+    if (has_atoms(m)) with_atoms.push_back(m.name);
+  }
+  if (std::find(names.begin(), names.end(), std::to_string(model)) != names.end())
+    fail(name, "model " + std::to_string(model) + " has no atoms (models with atoms: " + join(with_atoms, 10) + ")");
   fail(name, "no model " + std::to_string(model) + " (models: " + join(names, 10) + ")");
 }
 

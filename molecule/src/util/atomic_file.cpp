@@ -27,7 +27,8 @@ fs::path directory_of(const std::string& path) {
 }
 
 [[noreturn]] void fail_to_create(const std::string& path, int err) {
-  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err));
+  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err),
+              alpha::ErrorKind::BadInput);
 }
 
 }  // namespace
@@ -63,7 +64,7 @@ TemporaryFile::TemporaryFile(const std::string& target, TemporaryPaths* temporar
     }
     if (errno != EEXIST) fail_to_create(target, errno);
   }
-  alpha::fail(target + ": cannot create a temporary file in " + dir.string());
+  alpha::fail(target + ": cannot create a temporary file in " + dir.string(), alpha::ErrorKind::BadInput);
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -81,7 +82,8 @@ std::unique_lock<std::mutex> TemporaryFile::hold() const {
 // file, and a flush per file would dominate batch runs writing dozens each.
 void TemporaryFile::commit() {
   const auto lock = hold();
-  if (::rename(path_.c_str(), target_.c_str()) != 0) alpha::fail(target_ + ": cannot create: " + std::strerror(errno));
+  if (::rename(path_.c_str(), target_.c_str()) != 0)
+    alpha::fail(target_ + ": cannot create: " + std::strerror(errno), alpha::ErrorKind::BadInput);
   if (temporaries_) temporaries_->erase(path_);
   path_.clear();
 }
@@ -91,12 +93,13 @@ namespace {
 // The content in tmp, the temporary file of path (not yet renamed).
 void fill(const TemporaryFile& tmp, const std::string& path, std::string_view content) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory");
+  if (fs::is_directory(path, ec)) alpha::fail(path + ": is a directory", alpha::ErrorKind::BadInput);
   std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-  if (!out) alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno));
+  if (!out)
+    alpha::fail(path + ": cannot write " + tmp.path() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
   out.write(content.data(), std::streamsize(content.size()));
   out.close();
-  if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno));
+  if (out.fail()) alpha::fail(path + ": write error: " + std::strerror(errno), alpha::ErrorKind::BadInput);
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ class Inflater {
 public:
   explicit Inflater(const std::string& name) {
     // 16 + MAX_WBITS: expect the gzip wrapper (header, CRC-32, length).
-    if (inflateInit2(&z_, 16 + MAX_WBITS) != Z_OK) alpha::fail(name + ": cannot start gzip decompression");
+    if (inflateInit2(&z_, 16 + MAX_WBITS) != Z_OK)
+      alpha::fail(name + ": cannot start gzip decompression", alpha::ErrorKind::BadInput);
   }
   ~Inflater() { inflateEnd(&z_); }
   Inflater(const Inflater&) = delete;
@@ -58,22 +59,24 @@ void inflate_all(std::string_view data, const std::string& name, Sink sink) {
       // zero padding is tolerated, as gzip does.
       const std::string_view rest = data.substr(consumed);
       if (std::all_of(rest.begin(), rest.end(), [](char c) { return c == '\0'; })) return;
-      if (!is_gzip(rest)) alpha::fail(name + ": corrupt gzip data (garbage after the compressed stream)");
-      if (inflateReset(z.get()) != Z_OK) alpha::fail(name + ": corrupt gzip data");
+      if (!is_gzip(rest))
+        alpha::fail(name + ": corrupt gzip data (garbage after the compressed stream)", alpha::ErrorKind::BadInput);
+      if (inflateReset(z.get()) != Z_OK) alpha::fail(name + ": corrupt gzip data", alpha::ErrorKind::BadInput);
       continue;
     }
     if (rc == Z_DATA_ERROR) {
       const std::string what = z->msg ? z->msg : "invalid data";
-      alpha::fail(name + ": corrupt gzip data (" + what + ")");
+      alpha::fail(name + ": corrupt gzip data (" + what + ")", alpha::ErrorKind::BadInput);
     }
-    if (rc == Z_MEM_ERROR) alpha::fail(name + ": out of memory while decompressing");
+    if (rc == Z_MEM_ERROR) alpha::fail(name + ": out of memory while decompressing", alpha::ErrorKind::LimitExceeded);
     if (rc == Z_BUF_ERROR || rc == Z_NEED_DICT || rc == Z_STREAM_ERROR) {
       // No progress possible: with output space left, the input ran out.
-      if (consumed == data.size()) alpha::fail(name + ": truncated gzip data (unexpected end of file)");
-      alpha::fail(name + ": corrupt gzip data");
+      if (consumed == data.size())
+        alpha::fail(name + ": truncated gzip data (unexpected end of file)", alpha::ErrorKind::BadInput);
+      alpha::fail(name + ": corrupt gzip data", alpha::ErrorKind::BadInput);
     }
     if (consumed == data.size() && z->avail_out != 0)
-      alpha::fail(name + ": truncated gzip data (unexpected end of file)");
+      alpha::fail(name + ": truncated gzip data (unexpected end of file)", alpha::ErrorKind::BadInput);
   }
 }
 
@@ -84,7 +87,7 @@ bool is_gzip(std::string_view data) {
 }
 
 std::string gunzip(std::string_view data, const std::string& name, std::size_t max_bytes) {
-  if (!is_gzip(data)) alpha::fail(name + ": not gzip data (no gzip header)");
+  if (!is_gzip(data)) alpha::fail(name + ": not gzip data (no gzip header)", alpha::ErrorKind::BadInput);
   // Counted first, the output dropped chunk by chunk: a bomb fails at the
   // limit in constant memory; then inflated again into a string of the
   // exact size (twice the time of one pass, none of the copies of growing).

@@ -48,16 +48,20 @@ StagedDirectory::StagedDirectory(const fs::path& target, const std::string& name
   if (exists_no_follow(sibling_)) {  // left by a killed run, or in use by a live one
     const int fd = lock_directory(sibling_);
     if (fd < 0 && errno == EWOULDBLOCK)
-      alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)");
+      alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)",
+                  alpha::ErrorKind::BadInput);
     if (fd >= 0) ::close(fd);
     std::error_code ec;
     fs::remove_all(sibling_, ec);
   }
   if (::mkdir(sibling_.c_str(), 0777) != 0)
-    alpha::fail(name_ + ": cannot create " + sibling_.string() + ": " + std::strerror(errno));
+    alpha::fail(name_ + ": cannot create " + sibling_.string() + ": " + std::strerror(errno),
+                alpha::ErrorKind::BadInput);
   if (temporaries_) temporaries_->add(sibling_.string());
   lock_fd_ = lock_directory(sibling_);
-  if (lock_fd_ < 0) alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)");
+  if (lock_fd_ < 0)
+    alpha::fail(name_ + ": another alphapocket run is writing it (" + sibling_.string() + " is in use)",
+                alpha::ErrorKind::BadInput);
 }
 
 StagedDirectory::~StagedDirectory() {
@@ -83,24 +87,29 @@ void StagedDirectory::write(const std::string& file, std::string_view content) {
   const fs::path path = sibling_ / file;
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
-  if (ec) alpha::fail(name_ + ": cannot create " + path.parent_path().string() + ": " + ec.message());
+  if (ec)
+    alpha::fail(name_ + ": cannot create " + path.parent_path().string() + ": " + ec.message(),
+                alpha::ErrorKind::BadInput);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno));
+  if (!out)
+    alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
   out.write(content.data(), std::streamsize(content.size()));
   out.close();
-  if (out.fail()) alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno));
+  if (out.fail())
+    alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
 }
 
 void StagedDirectory::commit() {
   const auto lock = hold();
   const auto fail_errno = [&](const std::string& what) {
-    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno));
+    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
   };
   if (!exists_no_follow(target_)) {
     if (::rename(sibling_.c_str(), target_.c_str()) != 0) fail_errno("create it");
   } else {
     const int target_fd = lock_directory(target_);  // the earlier run, at sibling_ after the swap
-    if (target_fd < 0 && errno == EWOULDBLOCK) alpha::fail(name_ + ": another alphapocket run is writing it");
+    if (target_fd < 0 && errno == EWOULDBLOCK)
+      alpha::fail(name_ + ": another alphapocket run is writing it", alpha::ErrorKind::BadInput);
     struct Close {
       int fd;
       ~Close() {
