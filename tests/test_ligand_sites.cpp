@@ -170,7 +170,7 @@ std::string shell_with_benzene(const std::filesystem::path& file, double radius,
 
 }  // namespace
 
-TEST_CASE("ligand sites: a void that holds a small ligand is a site, and holds it", "[ligand_sites]") {
+TEST_CASE("ligand sites: a void that holds a small ligand is a site and holds it", "[ligand_sites]") {
   testing::TempDir dir;
   // R = 5.4 A: some 200 A^3 of MS volume (T4L L99A's benzene cavity: 209)
   // but far less free space than a drug-sized site (kLigandSiteVolume).
