@@ -23,5 +23,6 @@ Subcommand add_pockets_command(CLI::App& app);
 Subcommand add_surface_command(CLI::App& app);
 Subcommand add_batch_command(CLI::App& app);
 Subcommand add_merge_command(CLI::App& app);
+Subcommand add_track_command(CLI::App& app);
 
 }  // namespace alphapocket

@@ -84,6 +84,7 @@ int run(int argc, char** argv) {
   // In the order of --help: the product first, the layers below it last.
   commands.push_back(alphapocket::add_pockets_command(app));
   commands.push_back(alphapocket::add_batch_command(app));
+  commands.push_back(alphapocket::add_track_command(app));
   commands.push_back(alphapocket::add_merge_command(app));
   commands.push_back(alphapocket::add_surface_command(app));
   commands.push_back(alphapocket::add_delaunay_command(app));

@@ -110,6 +110,9 @@ struct Atom {
   char icode = '\0';         // insertion code; '\0' for none
   std::string chain;         // author chain id
   bool hetero = false;       // a HETATM record
+  // Position among the model's atoms in the file, from 0: the atom's place
+  // in a trajectory's coordinates (molecule/track.hpp).
+  std::size_t file_index = 0;
   alpha::Vec3 position;      // A
   double radius = 0;         // A, from molecule/radii.hpp
 };
@@ -170,6 +173,11 @@ Structure read_structure(const std::string& path, const StructureOptions& option
 // The same from the bytes of a file (possibly gzipped); `name` is used in
 // error messages.
 Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options = {});
+
+// Every model of the file's bytes (a multi-model PDB or mmCIF: an NMR
+// ensemble), each selected as parse_structure selects one (options.model
+// ignored), the file parsed once.
+std::vector<Structure> parse_models(std::string_view data, const std::string& name, const StructureOptions& options = {});
 
 // One line on what was read, kept and dropped, e.g. "PDB, model 1: kept
 // 2966 of 3294 atoms; dropped: 295 water, 33 hetero; 3 hetero groups".

@@ -891,6 +891,7 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
             kept = true;
           if (!kept && !in_ligand) continue;
           Atom atom = make_atom(a, res, chain);
+          atom.file_index = report.atoms_in_model - res.atoms.size() + i;
           atom.radius = radius(atom, kept);
           if (in_ligand) ligand.atoms.push_back(atom);
           ligand.kept = ligand.kept || (kept && in_ligand);
@@ -931,7 +932,11 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
 
 }  // namespace
 
-Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options) {
+namespace {
+
+// The file parsed by gemmi, and how each model is selected from it.
+template <class Select>
+auto parsed(std::string_view data, const std::string& name, const StructureOptions& options, Select&& select_models) {
   if (data.empty()) fail(name, "file is empty");
   std::string unzipped;
   const bool gzipped = is_gzip(data);
@@ -955,15 +960,36 @@ Structure parse_structure(std::string_view data, const std::string& name, const 
   UnknownElements unknown;
   const gemmi::Structure st = parse_with_gemmi(data, format, name, old.has_value(), &local_plddt, unknown);
   const bool af_name = std::filesystem::path(name).filename().string().rfind("AF-", 0) == 0;
-  Structure out = select(st, options, name, local_plddt || af_name, unknown);
-  if (old)
-    out.report.warnings.insert(out.report.warnings.begin(),
-                               "columns 73-80 hold an old-format id code and line number (line " +
-                                   std::to_string(old->line_number) + ": '" + old->text +
-                                   "'): ignored, elements taken from the atom names");
-  out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
-  out.report.gzipped = gzipped;
-  return out;
+  const auto one = [&](const StructureOptions& model_options) {
+    Structure out = select(st, model_options, name, local_plddt || af_name, unknown);
+    if (old)
+      out.report.warnings.insert(out.report.warnings.begin(),
+                                 "columns 73-80 hold an old-format id code and line number (line " +
+                                     std::to_string(old->line_number) + ": '" + old->text +
+                                     "'): ignored, elements taken from the atom names");
+    out.report.format = format == Format::Pdb ? "PDB" : "mmCIF";
+    out.report.gzipped = gzipped;
+    return out;
+  };
+  return select_models(st, one);
+}
+
+}  // namespace
+
+Structure parse_structure(std::string_view data, const std::string& name, const StructureOptions& options) {
+  return parsed(data, name, options, [&](const gemmi::Structure&, const auto& one) { return one(options); });
+}
+
+std::vector<Structure> parse_models(std::string_view data, const std::string& name, const StructureOptions& options) {
+  return parsed(data, name, options, [&](const gemmi::Structure& st, const auto& one) {
+    std::vector<Structure> models;
+    for (const gemmi::Model& m : st.models) {
+      StructureOptions model_options = options;
+      model_options.model = model_number(m);
+      models.push_back(one(model_options));
+    }
+    return models;
+  });
 }
 
 Structure read_structure(const std::string& path, const StructureOptions& options) {

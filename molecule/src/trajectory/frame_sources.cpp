@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: Apache-2.0
+// The frame sources of molecule/track.hpp: the models of one file, a list
+// of structure files, coordinates given as arrays.
+#include <utility>
+
+#include "alpha/error.hpp"
+#include "alpha/input_file.hpp"
+#include "molecule/track.hpp"
+#include "trajectory/coordinate_reader.hpp"
+#include "trajectory/gro_topology.hpp"
+
+namespace molecule {
+namespace {
+
+// The models of a multi-model file, then each further structure file's.
+class StructureFrames : public FrameSource {
+public:
+  StructureFrames(std::vector<std::string> files, const StructureOptions& options)
+      : files_(std::move(files)), options_(options) {}
+
+  std::optional<Frame> next() override {
+    while (model_ == models_.size()) {
+      if (file_ == files_.size()) return std::nullopt;
+      const std::string& file = files_[file_++];
+      std::string text;
+      try {
+        text = alpha::read_input_file(file);
+      } catch (const alpha::Error& e) {
+        throw StructureError(e.what(), e.kind());
+      }
+      models_ = parse_models(text, file, options_);
+      model_ = 0;
+      name_ = file;
+    }
+    Frame f;
+    f.index = index_;
+    f.time = double(index_++);
+    f.name = models_.size() > 1 ? name_ + " model " + std::to_string(models_[model_].report.model) : name_;
+    f.structure = std::move(models_[model_++]);
+    return f;
+  }
+
+private:
+  std::vector<std::string> files_;
+  StructureOptions options_;
+  std::size_t file_ = 0, model_ = 0, index_ = 0;
+  std::vector<Structure> models_;  // of the file being read
+  std::string name_;
+};
+
+// Coordinates of every atom of the topology's model, in its file order.
+class CoordinateFrames : public FrameSource {
+public:
+  CoordinateFrames(Structure topology, std::vector<std::vector<alpha::Vec3>> coordinates, std::vector<double> times)
+      : topology_(std::move(topology)), coordinates_(std::move(coordinates)), times_(std::move(times)) {
+    if (!times_.empty() && times_.size() != coordinates_.size())
+      throw alpha::Error(std::to_string(times_.size()) + " times for " + std::to_string(coordinates_.size()) +
+                             " frames",
+                         alpha::ErrorKind::Misuse);
+    const std::size_t need = topology_.report.atoms_in_model;
+    for (std::size_t k = 0; k < coordinates_.size(); ++k)
+      if (coordinates_[k].size() != need)
+        throw alpha::Error("frame " + std::to_string(k) + " has " + std::to_string(coordinates_[k].size()) +
+                               " atoms, but the topology has " + std::to_string(need),
+                           alpha::ErrorKind::BadInput);
+  }
+
+  std::optional<Frame> next() override {
+    if (next_ == coordinates_.size()) return std::nullopt;
+    Frame f;
+    f.index = next_;
+    f.time = times_.empty() ? double(next_) : times_[next_];
+    f.name = "frame " + std::to_string(next_);
+    f.structure = topology_;
+    for (Atom& a : f.structure.atoms) a.position = coordinates_[next_][a.file_index];
+    std::vector<alpha::Vec3>().swap(coordinates_[next_++]);  // memory given back as the frames are used
+    return f;
+  }
+
+private:
+  Structure topology_;
+  std::vector<std::vector<alpha::Vec3>> coordinates_;
+  std::vector<double> times_;
+  std::size_t next_ = 0;
+};
+
+// The frames of trajectory files, their atoms those of the topology.
+class TrajectoryFrames : public FrameSource {
+public:
+  TrajectoryFrames(Structure topology, std::string topology_name, std::vector<std::string> files)
+      : topology_(std::move(topology)), topology_name_(std::move(topology_name)), files_(std::move(files)) {}
+
+  std::optional<Frame> next() override {
+    std::optional<CoordinateFrame> c;
+    while (!(reader_ && (c = reader_->next()))) {
+      if (file_ == files_.size()) return std::nullopt;
+      name_ = files_[file_++];
+      reader_ = open_trajectory(name_);
+      in_file_ = 0;
+      const std::size_t need = topology_.report.atoms_in_model;
+      if (reader_->atoms() != need)
+        throw alpha::Error(name_ + ": " + std::to_string(reader_->atoms()) + " atoms, but the topology " +
+                               topology_name_ + " has " + std::to_string(need),
+                           alpha::ErrorKind::BadInput);
+    }
+    Frame f;
+    f.index = index_++;
+    f.time = c->time;
+    f.name = name_ + " frame " + std::to_string(in_file_++);
+    f.structure = topology_;
+    for (Atom& a : f.structure.atoms) a.position = c->x[a.file_index];
+    return f;
+  }
+
+private:
+  Structure topology_;
+  std::string topology_name_;
+  std::vector<std::string> files_;
+  std::size_t file_ = 0, index_ = 0, in_file_ = 0;
+  std::unique_ptr<CoordinateReader> reader_;
+  std::string name_;
+};
+
+Structure read_topology(const std::string& file, const StructureOptions& options) {
+  if (!is_gro_file(file)) return read_structure(file, options);
+  std::string text;
+  try {
+    text = alpha::read_input_file(file);
+  } catch (const alpha::Error& e) {
+    throw StructureError(e.what(), e.kind());
+  }
+  return parse_structure(gro_as_pdb(text, file), file, options);
+}
+
+}  // namespace
+
+std::unique_ptr<FrameSource> open_frames(const std::string& topology, const std::vector<std::string>& trajectories,
+                                         const StructureOptions& options) {
+  if (!trajectories.empty() && is_trajectory_file(trajectories.front())) {
+    for (const std::string& t : trajectories)
+      if (!is_trajectory_file(t))
+        throw alpha::Error(t + ": not a trajectory file like " + trajectories.front() + " (.dcd, .xtc, .trr)",
+                           alpha::ErrorKind::BadInput);
+    return std::make_unique<TrajectoryFrames>(read_topology(topology, options), topology, trajectories);
+  }
+  std::vector<std::string> files{topology};
+  for (const std::string& t : trajectories) {
+    if (!is_structure_file(t))
+      throw alpha::Error(t + ": neither a structure file (.pdb .ent .cif .mmcif, optionally .gz) nor a trajectory (" +
+                             std::string(is_trajectory_file("x.xtc") ? ".dcd .xtc .trr" : ".dcd") + ")",
+                         alpha::ErrorKind::BadInput);
+    files.push_back(t);
+  }
+  return std::make_unique<StructureFrames>(std::move(files), options);
+}
+
+std::unique_ptr<FrameSource> frames_from_coordinates(Structure topology,
+                                                     std::vector<std::vector<alpha::Vec3>> coordinates,
+                                                     std::vector<double> times) {
+  return std::make_unique<CoordinateFrames>(std::move(topology), std::move(coordinates), std::move(times));
+}
+
+}  // namespace molecule
