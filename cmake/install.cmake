@@ -30,3 +30,12 @@ install(FILES ${PROJECT_BINARY_DIR}/alphapocketConfig.cmake ${PROJECT_BINARY_DIR
 file(RELATIVE_PATH pc_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 configure_file(cmake/alphapocket.pc.in ${PROJECT_BINARY_DIR}/alphapocket.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/alphapocket.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# report.html's viewer files (molecule/report_assets.hpp looks for them in
+# ../share/alphapocket/viewer from the executable): Mol* from npm (`npm ci`
+# in report_assets/; OPTIONAL: without it pockets leaves report.html out).
+set(report_assets ${PROJECT_SOURCE_DIR}/report_assets)
+install(FILES ${report_assets}/report.js ${report_assets}/report.css ${report_assets}/index.js ${report_assets}/index.css
+              ${report_assets}/node_modules/molstar/build/viewer/molstar.js
+              ${report_assets}/node_modules/molstar/build/viewer/molstar.css
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/alphapocket/viewer OPTIONAL)
