@@ -55,7 +55,7 @@ struct PocketsOptions {
   std::optional<std::string> output_dir;  // -o '' is refused, not the default
   molecule::AnalysisOptions analysis;  // --min-volume, --mesh; .outputs from --outputs
   // Meshes cost 10-20 times the analysis: written when asked for.
-  std::string outputs = molecule::kDefaultOutputs;
+  std::string outputs = std::string(molecule::kDefaultOutputs) + ",html";  // html when Mol* is installed
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
   std::string surface_points;  // --surface-points FILE: ranking/buried_surface.hpp's points as CSV

@@ -17,7 +17,7 @@ struct OutputSelection {
 // What `alphapocket pockets` and Python's analyze() write unless told:
 // everything but the meshes, which cost 10-20 times the analysis (a
 // default OutputSelection, as the library's write_outputs takes, is all).
-inline constexpr const char* kDefaultOutputs = "report,csv,pml,pdb,tunnels,html";
+inline constexpr const char* kDefaultOutputs = "report,csv,pml,pdb,tunnels";
 
 // "report,csv,pml,pdb,meshes,tunnels,html" (any subset, any order; "all" for
 // every one) -> a selection; throws alpha::Error naming an unknown item.
