@@ -1,0 +1,436 @@
+// SPDX-License-Identifier: Apache-2.0
+// The compiled half of the Python package `alphapocket` (alphapocket/_core):
+// thin bindings of molecule::analyse, molecule::measure_surface and
+// alpha::AlphaComplex. The Python half (alphapocket/__init__.py) turns the
+// report into objects and adapts gemmi structures. Every long call releases
+// the GIL; alpha::Error becomes the exception of its kind (BadInputError,
+// LimitExceededError, MisuseError, all alphapocket.Error) with the CLI's
+// message.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
+#include "alpha/triangulation.hpp"
+#include "alphapocket/version.hpp"
+#include "molecule/analysis.hpp"
+#include "molecule/output_selection.hpp"
+#include "molecule/radii.hpp"
+#include "molecule/site_features.hpp"
+#include "molecule/surface.hpp"
+#include "molecule/track.hpp"
+#include "trajectory/track_outputs.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<alpha::Vec3> points_of(const Points& a) {
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw alpha::Error("points: expected an array of shape (N, 3)", alpha::ErrorKind::Misuse);
+  std::vector<alpha::Vec3> p(a.shape(0));
+  const auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) p[i] = {r(i, 0), r(i, 1), r(i, 2)};
+  return p;
+}
+
+std::vector<double> values_of(const Points& a, std::size_t n, const char* what) {
+  if (a.ndim() != 1 || std::size_t(a.shape(0)) != n)
+    throw alpha::Error(std::string(what) + ": expected " + std::to_string(n) + " values, one per point",
+                       alpha::ErrorKind::Misuse);
+  return {a.data(), a.data() + n};
+}
+
+py::array_t<double> array_of(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
+
+// --max-input-mb: structure files above it (after gzip decompression) are
+// refused (LimitExceededError).
+std::size_t max_input_mib(const py::dict& o) {
+  const long long mib = o["max_input_mb"].cast<long long>();
+  if (mib < 1 || mib > (1 << 20))
+    throw alpha::Error("max_input_mb: " + std::to_string(mib) + " is not in 1..1048576", alpha::ErrorKind::Misuse);
+  return std::size_t(mib);
+}
+
+// The options of `alphapocket pockets`, by the CLI's names.
+molecule::AnalysisOptions analysis_options(const py::dict& o) {
+  molecule::AnalysisOptions a;
+  a.cavities.probe = o["probe"].cast<double>();
+  a.cavities.min_volume = o["min_volume"].cast<double>();
+  const long long threads = o["threads"].cast<long long>();
+  if (threads < 1 || threads > 4096)
+    throw alpha::Error("threads: " + std::to_string(threads) + " is not in 1..4096", alpha::ErrorKind::Misuse);
+  a.cavities.threads = unsigned(threads);
+  a.structure.model = o["model"].cast<int>();
+  a.structure.chains = o["chains"].cast<std::vector<std::string>>();
+  a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();
+  a.structure.keep_waters = o["keep_waters"].cast<bool>();
+  a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
+  a.structure.keep_hetero_codes = o["keep_hetero_codes"].cast<std::vector<std::string>>();
+  a.structure.keep_cofactors = o["keep_cofactors"].cast<bool>();
+  a.structure.min_plddt = o["min_plddt"].cast<double>();
+  a.structure.max_input_mib = max_input_mib(o);
+  a.radii_file = o["radii"].cast<std::string>();
+  a.tunnels_from = o["tunnels_from"].cast<std::string>();
+  a.tunnels.probe = o["tunnel_probe"].cast<double>();
+  a.tunnels.pores = o["pores"].cast<bool>();
+  a.mesh_format = o["mesh"].cast<std::string>();
+  try {
+    a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("outputs: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
+  try {
+    a.ranking = molecule::parse_site_ranking(o["ranking"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("ranking: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
+  return a;
+}
+
+using Analysis = std::shared_ptr<const molecule::Analysis>;
+
+Analysis analyse_path(const std::string& path, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse(path, o));
+}
+
+// A structure file's text (e.g. gemmi's mmCIF of a gemmi.Structure), read
+// as the file would be.
+Analysis analyse_text(const std::string& name, const std::string& text, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse_content(name, text, o));
+}
+
+// Atoms from arrays: radii given, or ProtOr radii from residue, atom names
+// and elements.
+molecule::Structure structure_of(const Points& xyz, const std::optional<Points>& radii, const py::dict& names) {
+  const std::vector<alpha::Vec3> p = points_of(xyz);
+  const auto column = [&](const char* key, const std::string& fallback) {
+    std::vector<std::string> c(p.size(), fallback);
+    if (names.contains(key) && !names[key].is_none()) c = names[key].cast<std::vector<std::string>>();
+    if (c.size() != p.size())
+      throw alpha::Error(std::string(key) + ": expected " + std::to_string(p.size()) + " values, one per atom",
+                         alpha::ErrorKind::Misuse);
+    return c;
+  };
+  const auto atom_names = column("atom_names", "X"), residue_names = column("residue_names", "UNK"),
+             elements = column("elements", "X"), chains = column("chains", "A");
+  std::vector<int> seq(p.size(), 1);
+  if (names.contains("residue_numbers") && !names["residue_numbers"].is_none())
+    seq = names["residue_numbers"].cast<std::vector<int>>();
+  if (seq.size() != p.size()) throw alpha::Error("residue_numbers: expected one per atom", alpha::ErrorKind::Misuse);
+  const std::vector<double> r = radii ? values_of(*radii, p.size(), "radii") : std::vector<double>();
+  molecule::Structure s;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    molecule::Atom a;
+    a.serial = int(i + 1);
+    a.name = atom_names[i];
+    a.residue_name = residue_names[i];
+    a.element = elements[i];
+    a.chain = chains[i];
+    a.seq_num = seq[i];
+    a.position = p[i];
+    a.radius = radii ? r[i] : molecule::radius(a.residue_name, a.name, a.element);
+    s.atoms.push_back(std::move(a));
+  }
+  s.report.format = "arrays";
+  s.report.models = 1;
+  s.report.model = 1;
+  s.report.atoms_in_model = s.report.kept = s.atoms.size();
+  return s;
+}
+
+Analysis analyse_arrays(const std::string& name, const Points& xyz, const std::optional<Points>& radii,
+                        const py::dict& names, const py::dict& options) {
+  molecule::AnalysisOptions o = analysis_options(options);
+  molecule::Structure s = structure_of(xyz, radii, names);
+  py::gil_scoped_release release;
+  return std::make_shared<const molecule::Analysis>(molecule::analyse_structure(name, std::move(s), o));
+}
+
+// The atom selection of `alphapocket surface` (one atom is enough).
+molecule::StructureOptions surface_selection(const py::dict& selection) {
+  molecule::StructureOptions so;
+  so.model = selection["model"].cast<int>();
+  so.chains = selection["chains"].cast<std::vector<std::string>>();
+  so.keep_hydrogens = selection["keep_hydrogens"].cast<bool>();
+  so.keep_waters = selection["keep_waters"].cast<bool>();
+  so.keep_hetero = selection["keep_hetero"].cast<bool>();
+  so.keep_hetero_codes = selection["keep_hetero_codes"].cast<std::vector<std::string>>();
+  so.keep_cofactors = selection["keep_cofactors"].cast<bool>();
+  so.max_input_mib = max_input_mib(selection);
+  so.min_atoms = 1;
+  return so;
+}
+
+py::dict surface_dict(const molecule::Surface& s) {
+  py::dict d;
+  d["atoms"] = s.balls;
+  d["sa_area"] = s.sa_area;
+  d["sa_volume"] = s.sa_volume;
+  d["ms_area"] = s.ms_area ? py::cast(*s.ms_area) : py::none();
+  d["ms_volume"] = s.ms_volume ? py::cast(*s.ms_volume) : py::none();
+  d["atom_areas"] = array_of(s.ball_areas);
+  d["atom_volumes"] = array_of(s.ball_volumes);
+  const bool per_atom = !s.ms_ball_areas.empty();
+  d["ms_atom_areas"] = per_atom ? py::object(array_of(s.ms_ball_areas)) : py::object(py::none());
+  d["ms_atom_volumes"] = per_atom ? py::object(array_of(s.ms_ball_volumes)) : py::object(py::none());
+  return d;
+}
+
+// The triangulation and its complex, owned together (the complex refers to
+// the triangulation). threads > 1 builds both on threads (2^15 points or
+// more): the triangulation's cells are numbered otherwise, so shape_mesh
+// lists the same faces in another order; everything else is the same.
+class PyAlphaComplex {
+public:
+  PyAlphaComplex(const Points& points, const std::optional<Points>& weights, unsigned threads) {
+    std::vector<alpha::Vec3> p = points_of(points);
+    std::vector<double> w = weights ? values_of(*weights, p.size(), "weights") : std::vector<double>();
+    if (threads < 1) throw py::value_error("threads must be at least 1");
+    py::gil_scoped_release release;
+    t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w), threads);
+    ac_ = std::make_unique<alpha::AlphaComplex>(*t_, threads);
+  }
+
+  // Every loop over the complex runs without the GIL (a spectrum of 10^5
+  // values takes a second); only the copy into numpy holds it.
+  py::array_t<double> spectrum() const {
+    std::vector<double> v(ac_->spectrum_size());
+    {
+      py::gil_scoped_release release;
+      std::vector<alpha::Index> ranks(v.size());
+      std::iota(ranks.begin(), ranks.end(), alpha::Index(0));
+      ac_->spectrum_values(ranks, v);
+    }
+    return array_of(v);
+  }
+
+  // Counts per dimension (rows: vertices, edges, triangles, tetrahedra) and
+  // class (columns: exterior, singular, regular, interior).
+  py::array_t<std::int64_t> classify(double alpha_sq) const {
+    alpha::ClassCounts c;
+    {
+      py::gil_scoped_release release;
+      c = ac_->counts(ac_->level(alpha_sq));
+    }
+    py::array_t<std::int64_t> out({4, 4});
+    auto m = out.mutable_unchecked<2>();
+    for (int d = 0; d < 4; ++d)
+      for (int k = 0; k < 4; ++k) m(d, k) = std::int64_t(c[d][k]);
+    return out;
+  }
+
+  std::array<std::size_t, 3> betti(double alpha_sq) const {
+    const alpha::Index level = ac_->level(alpha_sq);
+    py::gil_scoped_release release;
+    return ac_->betti(level);
+  }
+
+  // Rows (dim, birth alpha_sq, death alpha_sq), death inf for classes that
+  // never die.
+  py::array_t<double> persistence() const {
+    std::vector<double> rows;
+    {
+      py::gil_scoped_release release;
+      const std::vector<alpha::PersistencePair>& pairs = ac_->persistence();
+      std::vector<alpha::Index> ranks;
+      for (const alpha::PersistencePair& p : pairs) {
+        ranks.push_back(p.birth);
+        if (p.death != alpha::kNever) ranks.push_back(p.death);
+      }
+      std::vector<double> values(ranks.size());
+      ac_->spectrum_values(ranks, values);
+      rows.reserve(3 * pairs.size());
+      std::size_t next = 0;
+      for (const alpha::PersistencePair& p : pairs) {
+        rows.push_back(p.dim);
+        rows.push_back(values[next++]);
+        rows.push_back(p.death == alpha::kNever ? INFINITY : values[next++]);
+      }
+    }
+    py::array_t<double> out({py::ssize_t(rows.size() / 3), py::ssize_t(3)});
+    std::copy(rows.begin(), rows.end(), out.mutable_data());
+    return out;
+  }
+
+  // The shape's boundary at alpha_sq: (vertices (V, 3), faces (F, 3) outward).
+  py::tuple shape_mesh(double alpha_sq) const {
+    alpha::ShapeBoundary b;
+    {
+      py::gil_scoped_release release;
+      b = ac_->boundary(ac_->level(alpha_sq));
+    }
+    const auto points = t_->points();
+    py::array_t<double> v({py::ssize_t(points.size()), py::ssize_t(3)});
+    auto mv = v.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < points.size(); ++i) mv(i, 0) = points[i].x, mv(i, 1) = points[i].y, mv(i, 2) = points[i].z;
+    py::array_t<std::int64_t> f({py::ssize_t(b.triangles.size()), py::ssize_t(3)});
+    auto mf = f.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < b.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) mf(i, k) = b.triangles[i][k];
+    return py::make_tuple(v, f);
+  }
+
+  std::size_t num_points() const { return t_->num_points(); }
+
+private:
+  std::unique_ptr<alpha::Triangulation> t_;
+  std::unique_ptr<alpha::AlphaComplex> ac_;
+};
+
+using TrackResult = std::shared_ptr<const molecule::TrackResult>;
+
+// Frames as arrays (F, N, 3): every atom of the topology (a structure
+// file's text) in its file order, A; `times` one per frame or empty.
+TrackResult track_arrays(const std::string& name, const std::string& topology_text, const Points& coordinates,
+                         const std::vector<double>& times, const py::dict& options) {
+  molecule::TrackOptions o;
+  o.analysis = analysis_options(options);
+  o.jobs = unsigned(o.analysis.cavities.threads);
+  o.grid_spacing = options["grid_spacing"].cast<double>();
+  o.min_lining_overlap = options["overlap"].cast<double>();
+  if (coordinates.ndim() != 3 || coordinates.shape(2) != 3)
+    throw alpha::Error("coordinates: expected an array of shape (frames, atoms, 3)", alpha::ErrorKind::Misuse);
+  std::vector<std::vector<alpha::Vec3>> frames(coordinates.shape(0));
+  const auto r = coordinates.unchecked<3>();
+  for (py::ssize_t k = 0; k < coordinates.shape(0); ++k) {
+    frames[k].resize(coordinates.shape(1));
+    for (py::ssize_t i = 0; i < coordinates.shape(1); ++i) frames[k][i] = {r(k, i, 0), r(k, i, 1), r(k, i, 2)};
+  }
+  py::gil_scoped_release release;
+  molecule::Structure topology = molecule::parse_structure(topology_text, name, o.analysis.structure);
+  const auto source = molecule::frames_from_coordinates(std::move(topology), std::move(frames), times);
+  return std::make_shared<const molecule::TrackResult>(molecule::track(*source, o));
+}
+
+// A grid's values as an (nx, ny, nz) array.
+py::array_t<float> grid_array(const molecule::SpaceGrid& g, const std::vector<float>& values) {
+  py::array_t<float> out({py::ssize_t(g.nx), py::ssize_t(g.ny), py::ssize_t(g.nz)});
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "alphapocket's compiled core; use the package alphapocket";
+  m.attr("__version__") = alphapocket::kVersion;
+
+  // Exceptions, one per alpha::ErrorKind, under alphapocket.Error.
+  static py::exception<alpha::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<alpha::Error> bad_input(m, "BadInputError", error.ptr());
+  static py::exception<alpha::Error> limit(m, "LimitExceededError", error.ptr());
+  static py::exception<alpha::Error> misuse(m, "MisuseError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const alpha::Error& e) {
+      switch (e.kind()) {
+        case alpha::ErrorKind::BadInput: bad_input(e.what()); return;
+        case alpha::ErrorKind::LimitExceeded: limit(e.what()); return;
+        case alpha::ErrorKind::Misuse: misuse(e.what()); return;
+        case alpha::ErrorKind::Internal: break;
+      }
+      error(e.what());
+    } catch (const std::bad_alloc&) {
+      limit("out of memory");
+    }
+  });
+
+  py::class_<molecule::Analysis, std::shared_ptr<molecule::Analysis>>(m, "Analysis")
+      .def("report_json", [](const molecule::Analysis& a) { return molecule::report_text(a); })
+      .def("write",
+           [](const molecule::Analysis& a, const std::string& outdir) {
+             py::gil_scoped_release release;
+             return molecule::write_outputs(a, outdir);
+           })
+      .def("features_csv",
+           [](const molecule::Analysis& a) {
+             py::gil_scoped_release release;
+             return molecule::site_features_csv(a.structure, a.search.cavities);
+           })
+      .def_property_readonly("file", [](const molecule::Analysis& a) { return a.file; });
+
+  py::class_<molecule::TrackResult, std::shared_ptr<molecule::TrackResult>>(m, "TrackResult")
+      .def("files", [](const molecule::TrackResult& r) { return molecule::track_output_files(r); })
+      .def("frequency", [](const molecule::TrackResult& r) { return grid_array(r.grid, r.frequency); })
+      .def("density", [](const molecule::TrackResult& r) { return grid_array(r.grid, r.density); })
+      .def_property_readonly("origin", [](const molecule::TrackResult& r) {
+        return std::array<double, 3>{r.grid.origin.x, r.grid.origin.y, r.grid.origin.z};
+      })
+      .def_property_readonly("spacing", [](const molecule::TrackResult& r) { return r.grid.spacing; });
+  m.def("track_arrays", [](const std::string& name, const std::string& topology_text, const Points& coordinates,
+                           const std::vector<double>& times, const py::dict& options) {
+    return std::const_pointer_cast<molecule::TrackResult>(track_arrays(name, topology_text, coordinates, times, options));
+  });
+
+  m.def("analyse_path", [](const std::string& path, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));
+  });
+  m.def("analyse_text", [](const std::string& name, const std::string& text, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_text(name, text, options));
+  });
+  m.def("analyse_arrays", [](const std::string& name, const Points& xyz, const std::optional<Points>& radii,
+                             const py::dict& names, const py::dict& options) {
+    return std::const_pointer_cast<molecule::Analysis>(analyse_arrays(name, xyz, radii, names, options));
+  });
+
+  m.def("surface_path", [](const std::string& path, double probe, bool excluded, bool per_atom,
+                           const py::dict& selection) {
+    const molecule::StructureOptions so = surface_selection(selection);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::surface_of_file(path, so, {probe, excluded, per_atom});
+    }
+    return surface_dict(s);
+  });
+  m.def("surface_text", [](const std::string& name, const std::string& text, double probe, bool excluded,
+                           bool per_atom, const py::dict& selection) {
+    const molecule::StructureOptions so = surface_selection(selection);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::surface_of_content(name, text, so, {probe, excluded, per_atom});
+    }
+    return surface_dict(s);
+  });
+  m.def("surface_arrays", [](const Points& xyz, const std::optional<Points>& radii, const py::dict& names,
+                             double probe, bool excluded, bool per_atom) {
+    const molecule::Structure st = structure_of(xyz, radii, names);
+    molecule::Surface s;
+    {
+      py::gil_scoped_release release;
+      s = molecule::measure_surface(st.atoms, {probe, excluded, per_atom});
+    }
+    return surface_dict(s);
+  });
+
+  py::class_<PyAlphaComplex>(m, "AlphaComplex")
+      .def(py::init<const Points&, const std::optional<Points>&, unsigned>(), py::arg("points"),
+           py::arg("weights") = py::none(), py::arg("threads") = 1)
+      .def_property_readonly("spectrum", &PyAlphaComplex::spectrum)
+      .def("classify", &PyAlphaComplex::classify, py::arg("alpha_sq"))
+      .def("betti", &PyAlphaComplex::betti, py::arg("alpha_sq"))
+      .def("persistence", &PyAlphaComplex::persistence)
+      .def("shape_mesh", &PyAlphaComplex::shape_mesh, py::arg("alpha_sq"))
+      .def("__len__", &PyAlphaComplex::num_points);
+}
