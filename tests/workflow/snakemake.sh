@@ -30,6 +30,7 @@ for f in "$data"/1UYD.pdb "$data"/1d3z_models_1_2.pdb.gz "$data"/1fbl.pdb "$data
   ln -s "$f" in/"$(basename "$f")"
 done
 mv in/truncated.cif in/bad/truncated_cif.cif
+rm in/truncated.pdb  # the reader's cut PDB case: its id would repeat truncated.pdb.gz's
 mv in/{corrupt,empty,not_structure,short_line,three_atoms}.* in/truncated.pdb.gz in/bad/
 find in -name '*.*' -type l | sort >structures.txt
 [[ $(wc -l <structures.txt) -eq 19 ]] || fail "expected 19 structures, have $(wc -l <structures.txt)"

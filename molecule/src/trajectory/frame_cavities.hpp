@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // What tracking keeps of one frame's analysis: each pocket, void and
 // tunnel with its measures, its lining atoms and residues by name, and the
-// grid points of its space (molecule/track.hpp); and the frame's
+// grid points of its space (molecule/track_result.hpp); and the frame's
 // contribution to the density grid. The analysis itself (triangulation,
 // complex) is dropped once this is taken.
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "molecule/analysis.hpp"
-#include "molecule/track.hpp"
+#include "molecule/track_result.hpp"
 
 namespace molecule {
 

@@ -5,15 +5,12 @@
 #include <chrono>
 #include <new>
 
+#include "molecule/track.hpp"
 #include "util/parallel_for.hpp"
 #include "trajectory/frame_cavities.hpp"
 #include "trajectory/pocket_tracker.hpp"
 
 namespace molecule {
-
-const char* kind_name(CavityKind kind) {
-  return kind == CavityKind::pocket ? "pocket" : kind == CavityKind::void_ ? "void" : "tunnel";
-}
 
 namespace {
 
