@@ -93,11 +93,16 @@ def test_arrays_with_radii():
     assert np.linalg.norm(a.voids[0].center) < 2.0
 
 
-def test_options_reach_the_search():
+def test_options_reach_the_search(pdb_analysis):
+    """min_volume drops the smaller cavities (the defaults keep some below
+    it); a larger probe gives a larger solvent-accessible volume."""
     a = alphapocket.analyze(PDB, probe=1.6, min_volume=20, tunnels_from="none")
     assert a.report["parameters"]["probe"] == 1.6
     assert a.report["parameters"]["min_volume"] == 20
-    assert a.tunnels == [] or all(t is not None for t in a.tunnels)
+    default = pdb_analysis.pockets + pdb_analysis.voids
+    assert any(c.sa_volume < 20 for c in default)
+    assert a.pockets and all(c.sa_volume >= 20 for c in a.pockets + a.voids)
+    assert a.report["molecule"]["sa_volume"] > pdb_analysis.report["molecule"]["sa_volume"]
 
 
 def test_sites_carry_the_ligandability_probability(pdb_analysis):
