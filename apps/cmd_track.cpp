@@ -87,11 +87,9 @@ int run_track(TrackCommandOptions& opt) {
   for (std::size_t t : molecule::top_pockets(result)) {
     if (shown++ == 10) break;
     const molecule::Track& track = result.tracks[t];
-    double sa = 0, ms = 0;
-    for (std::size_t o : track.observations) sa += result.observations[o].sa_volume, ms += result.observations[o].ms_volume;
-    const double n = double(track.observations.size());
     std::printf("%6zu  %6zu  %9.2f  %15.1f  %15.1f\n", track.id, track.observations.size(), result.frequency_of(track),
-                sa / n, ms / n);
+                molecule::track_stats(result, track, &molecule::Observation::sa_volume).mean,
+                molecule::track_stats(result, track, &molecule::Observation::ms_volume).mean);
   }
   flush_stdout();
   return 0;

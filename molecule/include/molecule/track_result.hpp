@@ -90,4 +90,10 @@ struct TrackResult {
   double frequency_of(const Track& t) const { return double(t.observations.size()) / double(frames.size()); }
 };
 
+// Mean, least and greatest of one measure over a track's observations.
+struct TrackStats {
+  double mean = 0, min = 0, max = 0;
+};
+TrackStats track_stats(const TrackResult& r, const Track& t, double Observation::*measure);
+
 }  // namespace molecule

@@ -31,20 +31,6 @@ std::string frames_csv(const TrackResult& r) {
   return out;
 }
 
-struct Stats {
-  double mean = NAN, min = NAN, max = NAN;
-};
-template <class Get>
-Stats stats(const TrackResult& r, const Track& t, Get&& get) {
-  Stats s{0, INFINITY, -INFINITY};
-  for (std::size_t o : t.observations) {
-    const double v = get(r.observations[o]);
-    s.mean += v, s.min = std::min(s.min, v), s.max = std::max(s.max, v);
-  }
-  s.mean /= double(t.observations.size());
-  return s;
-}
-
 // "A:TYR:42=1.000 A:SER:43=0.500": each residue with the share of the track's frames it lines, most frequent first.
 std::string residue_frequencies(const Track& t) {
   std::vector<std::pair<std::string, std::size_t>> rs(t.residues.begin(), t.residues.end());
@@ -63,10 +49,10 @@ std::string tracks_csv(const TrackResult& r) {
   const auto id = [&](const std::optional<std::size_t>& t) { return t ? std::to_string(r.tracks[*t].id) : ""; };
   for (const Track& t : r.tracks) {
     const bool tunnel = t.kind == CavityKind::tunnel;
-    const Stats sa = stats(r, t, [](const Observation& o) { return o.sa_volume; });
-    const Stats ms = stats(r, t, [](const Observation& o) { return o.ms_volume; });
-    const Stats p = stats(r, t, [](const Observation& o) { return o.probability; });
-    const Stats b = stats(r, t, [](const Observation& o) { return o.bottleneck_radius; });
+    const TrackStats sa = track_stats(r, t, &Observation::sa_volume);
+    const TrackStats ms = track_stats(r, t, &Observation::ms_volume);
+    const TrackStats p = track_stats(r, t, &Observation::probability);
+    const TrackStats b = track_stats(r, t, &Observation::bottleneck_radius);
     const auto v = [&](double x) { return tunnel ? std::string() : number(x); };
     const auto w = [&](double x) { return tunnel ? number(x) : std::string(); };
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", t.id, kind_name(t.kind),
@@ -130,7 +116,7 @@ std::vector<std::size_t> top_pockets(const TrackResult& r) {
   for (std::size_t t = 0; t < r.tracks.size(); ++t) {
     if (r.tracks[t].kind != CavityKind::pocket) continue;
     out.push_back(t);
-    mean[t] = stats(r, r.tracks[t], [](const Observation& o) { return o.sa_volume; }).mean;
+    mean[t] = track_stats(r, r.tracks[t], &Observation::sa_volume).mean;
   }
   std::stable_sort(out.begin(), out.end(), [&](std::size_t a, std::size_t b) {
     const std::size_t na = r.tracks[a].observations.size(), nb = r.tracks[b].observations.size();
