@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The compiled half of the Python package `alphapocket` (alphapocket/_core):
 // thin bindings of molecule::analyse, molecule::measure_surface and
-// alpha::AlphaComplex. The Python half (alphapocket/__init__.py) turns the
+// alpha::AlphaComplex (molecule::track: track.cpp). The Python half (alphapocket/__init__.py) turns the
 // report into objects and adapts gemmi structures. Every long call releases
 // the GIL; alpha::Error becomes the exception of its kind (BadInputError,
 // LimitExceededError, MisuseError, all alphapocket.Error) with the CLI's
@@ -30,12 +30,12 @@
 #include "molecule/radii.hpp"
 #include "molecule/site_features.hpp"
 #include "molecule/surface.hpp"
+#include "bindings.hpp"
 
 namespace py = pybind11;
+using alphapocket_python::Points;
 
 namespace {
-
-using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 std::vector<alpha::Vec3> points_of(const Points& a) {
   if (a.ndim() != 2 || a.shape(1) != 3)
@@ -64,41 +64,6 @@ std::size_t max_input_mib(const py::dict& o) {
   return std::size_t(mib);
 }
 
-// The options of `alphapocket pockets`, by the CLI's names.
-molecule::AnalysisOptions analysis_options(const py::dict& o) {
-  molecule::AnalysisOptions a;
-  a.cavities.probe = o["probe"].cast<double>();
-  a.cavities.min_volume = o["min_volume"].cast<double>();
-  const long long threads = o["threads"].cast<long long>();
-  if (threads < 1 || threads > 4096)
-    throw alpha::Error("threads: " + std::to_string(threads) + " is not in 1..4096", alpha::ErrorKind::Misuse);
-  a.cavities.threads = unsigned(threads);
-  a.structure.model = o["model"].cast<int>();
-  a.structure.chains = o["chains"].cast<std::vector<std::string>>();
-  a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();
-  a.structure.keep_waters = o["keep_waters"].cast<bool>();
-  a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
-  a.structure.keep_hetero_codes = o["keep_hetero_codes"].cast<std::vector<std::string>>();
-  a.structure.keep_cofactors = o["keep_cofactors"].cast<bool>();
-  a.structure.min_plddt = o["min_plddt"].cast<double>();
-  a.structure.max_input_mib = max_input_mib(o);
-  a.radii_file = o["radii"].cast<std::string>();
-  a.tunnels_from = o["tunnels_from"].cast<std::string>();
-  a.tunnels.probe = o["tunnel_probe"].cast<double>();
-  a.tunnels.pores = o["pores"].cast<bool>();
-  a.mesh_format = o["mesh"].cast<std::string>();
-  try {
-    a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
-  } catch (const alpha::Error& e) {
-    throw alpha::Error(std::string("outputs: ") + e.what(), alpha::ErrorKind::Misuse);
-  }
-  try {
-    a.ranking = molecule::parse_site_ranking(o["ranking"].cast<std::string>());
-  } catch (const alpha::Error& e) {
-    throw alpha::Error(std::string("ranking: ") + e.what(), alpha::ErrorKind::Misuse);
-  }
-  return a;
-}
 
 // analyze()'s defaults, by the CLI's names, read from the C++ option
 // structs (and the CLI's default output list), so that the library, the
@@ -130,7 +95,7 @@ py::dict analysis_defaults() {
 using Analysis = std::shared_ptr<const molecule::Analysis>;
 
 Analysis analyse_path(const std::string& path, const py::dict& options) {
-  molecule::AnalysisOptions o = analysis_options(options);
+  molecule::AnalysisOptions o = alphapocket_python::analysis_options(options);
   py::gil_scoped_release release;
   return std::make_shared<const molecule::Analysis>(molecule::analyse(path, o));
 }
@@ -138,7 +103,7 @@ Analysis analyse_path(const std::string& path, const py::dict& options) {
 // A structure file's text (e.g. gemmi's mmCIF of a gemmi.Structure), read
 // as the file would be.
 Analysis analyse_text(const std::string& name, const std::string& text, const py::dict& options) {
-  molecule::AnalysisOptions o = analysis_options(options);
+  molecule::AnalysisOptions o = alphapocket_python::analysis_options(options);
   py::gil_scoped_release release;
   return std::make_shared<const molecule::Analysis>(molecule::analyse_content(name, text, o));
 }
@@ -184,7 +149,7 @@ molecule::Structure structure_of(const Points& xyz, const std::optional<Points>&
 
 Analysis analyse_arrays(const std::string& name, const Points& xyz, const std::optional<Points>& radii,
                         const py::dict& names, const py::dict& options) {
-  molecule::AnalysisOptions o = analysis_options(options);
+  molecule::AnalysisOptions o = alphapocket_python::analysis_options(options);
   molecule::Structure s = structure_of(xyz, radii, names);
   py::gil_scoped_release release;
   return std::make_shared<const molecule::Analysis>(molecule::analyse_structure(name, std::move(s), o));
@@ -323,6 +288,45 @@ private:
 
 }  // namespace
 
+namespace alphapocket_python {
+
+molecule::AnalysisOptions analysis_options(const py::dict& o) {
+  molecule::AnalysisOptions a;
+  a.cavities.probe = o["probe"].cast<double>();
+  a.cavities.min_volume = o["min_volume"].cast<double>();
+  const long long threads = o["threads"].cast<long long>();
+  if (threads < 1 || threads > 4096)
+    throw alpha::Error("threads: " + std::to_string(threads) + " is not in 1..4096", alpha::ErrorKind::Misuse);
+  a.cavities.threads = unsigned(threads);
+  a.structure.model = o["model"].cast<int>();
+  a.structure.chains = o["chains"].cast<std::vector<std::string>>();
+  a.structure.keep_hydrogens = o["keep_hydrogens"].cast<bool>();
+  a.structure.keep_waters = o["keep_waters"].cast<bool>();
+  a.structure.keep_hetero = o["keep_hetero"].cast<bool>();
+  a.structure.keep_hetero_codes = o["keep_hetero_codes"].cast<std::vector<std::string>>();
+  a.structure.keep_cofactors = o["keep_cofactors"].cast<bool>();
+  a.structure.min_plddt = o["min_plddt"].cast<double>();
+  a.structure.max_input_mib = max_input_mib(o);
+  a.radii_file = o["radii"].cast<std::string>();
+  a.tunnels_from = o["tunnels_from"].cast<std::string>();
+  a.tunnels.probe = o["tunnel_probe"].cast<double>();
+  a.tunnels.pores = o["pores"].cast<bool>();
+  a.mesh_format = o["mesh"].cast<std::string>();
+  try {
+    a.outputs = molecule::parse_output_selection(o["outputs"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("outputs: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
+  try {
+    a.ranking = molecule::parse_site_ranking(o["ranking"].cast<std::string>());
+  } catch (const alpha::Error& e) {
+    throw alpha::Error(std::string("ranking: ") + e.what(), alpha::ErrorKind::Misuse);
+  }
+  return a;
+}
+
+}  // namespace alphapocket_python
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "alphapocket's compiled core; use the package alphapocket";
   m.attr("__version__") = alphapocket::kVersion;
@@ -362,6 +366,7 @@ PYBIND11_MODULE(_core, m) {
            })
       .def_property_readonly("file", [](const molecule::Analysis& a) { return a.file; });
 
+  alphapocket_python::add_track(m);
   m.def("analysis_defaults", &analysis_defaults);
   m.def("analyse_path", [](const std::string& path, const py::dict& options) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));

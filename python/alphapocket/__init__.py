@@ -3,10 +3,13 @@
 
 analyze(structure) finds the pockets, voids and tunnels of a structure as
 `alphapocket pockets` does; surface(structure) measures its solvent-accessible
-and molecular surfaces as `alphapocket surface` does; AlphaComplex(points)
-gives the alpha complex of any (weighted) point cloud. A structure is a file
-path, a gemmi.Structure (python3-gemmi; gemmi writes it as mmCIF text, read
-as a file would be: the same atom selection, no binary coupling to gemmi),
+and molecular surfaces as `alphapocket surface` does; track(frames) follows the
+pockets, voids and tunnels of a trajectory or an ensemble through time as
+`alphapocket track` does (frames from an MDAnalysis Universe, or coordinates
+as arrays); AlphaComplex(points) gives the alpha complex of any (weighted)
+point cloud. A structure is a file path, a gemmi.Structure (python3-gemmi;
+gemmi writes it as mmCIF text, read as a file would be: the same atom
+selection, no binary coupling to gemmi),
 or arrays given as keywords (coordinates=N x 3, radii=N, optional
 atom_names, residue_names, elements, chains, residue_numbers). Long calls
 release the GIL: threads run in parallel.
@@ -23,8 +26,9 @@ import numpy as np
 
 from ._core import (AlphaComplex, BadInputError, Error, LimitExceededError, MisuseError, __version__)
 from . import _core
+from .trajectories import TrackResult, track
 
-__all__ = ["analyze", "surface", "AlphaComplex", "Analysis", "Record", "Error", "BadInputError",
+__all__ = ["analyze", "surface", "track", "TrackResult", "AlphaComplex", "Analysis", "Record", "Error", "BadInputError",
            "LimitExceededError", "MisuseError", "__version__"]
 
 # The defaults of `alphapocket pockets`, read from the C++ option structs.
@@ -161,6 +165,20 @@ def _core_arrays(arrays):
     return xyz, radii, names
 
 
+def _options(caller, options, defaults):
+    """`options` over `defaults` (which name every option), as the core takes them."""
+    unknown = set(options) - set(defaults)
+    if unknown:
+        raise MisuseError(caller + ": unknown option(s) " + ", ".join(sorted(unknown)))
+    opts = dict(defaults, **options)
+    opts["chains"] = list(opts["chains"])
+    _hetero_option(opts)
+    opts["radii"] = os.fspath(opts["radii"])
+    if isinstance(opts["tunnels_from"], int):
+        opts["tunnels_from"] = str(opts["tunnels_from"])
+    return opts
+
+
 def analyze(structure=None, **options):
     """Pockets, voids, sites and tunnels of a structure (see the module doc);
     options as `alphapocket pockets` names them: probe=1.4, min_volume=1,
@@ -175,15 +193,7 @@ def analyze(structure=None, **options):
     LimitExceededError), threads=1 (threads measuring the cavities, as
     `pockets -j`; the results are identical for any number)."""
     kind, source, data = _input(structure, options)
-    unknown = set(options) - set(_ANALYZE_DEFAULTS)
-    if unknown:
-        raise MisuseError("analyze: unknown option(s) " + ", ".join(sorted(unknown)))
-    opts = dict(_ANALYZE_DEFAULTS, **options)
-    opts["chains"] = list(opts["chains"])
-    _hetero_option(opts)
-    opts["radii"] = os.fspath(opts["radii"])
-    if isinstance(opts["tunnels_from"], int):
-        opts["tunnels_from"] = str(opts["tunnels_from"])
+    opts = _options("analyze", options, _ANALYZE_DEFAULTS)
     if kind == "path":
         return Analysis(_core.analyse_path(source, opts))
     if kind == "text":

@@ -5,7 +5,7 @@ import re
 import subprocess
 import sys
 
-from conftest import PDB, ROOT
+from conftest import DATA, PDB, ROOT
 
 
 def python_blocks(document, section):
@@ -18,6 +18,8 @@ def run_blocks(document, blocks, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "examples" / "data").mkdir(parents=True)
     (tmp_path / "examples" / "data" / "1a26A.pdb").write_bytes(PDB.read_bytes())
+    (tmp_path / "tests" / "data").mkdir(parents=True)
+    (tmp_path / "tests" / "data" / "1l2y.pdb.gz").write_bytes((DATA / "1l2y.pdb.gz").read_bytes())
     for block in blocks:
         exec(compile(block, document, "exec"), {})
     assert (tmp_path / "1a26A_pockets" / "report.json").is_file()
@@ -25,8 +27,9 @@ def run_blocks(document, blocks, tmp_path, monkeypatch):
 
 def test_library_python_examples(tmp_path, monkeypatch):
     blocks = python_blocks("docs/library.md", "Use from Python")
-    assert len(blocks) == 2
+    assert len(blocks) == 3
     run_blocks("docs/library.md", blocks, tmp_path, monkeypatch)
+    assert (tmp_path / "1l2y_track" / "tracks.csv").is_file()
 
 
 def test_readme_python_example(tmp_path, monkeypatch):

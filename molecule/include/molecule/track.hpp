@@ -59,6 +59,10 @@ public:
   virtual std::optional<Frame> next() = 0;
 };
 
+// The structure of a trajectory's atoms: a PDB, mmCIF or GROMACS .gro
+// file, read as `options` says (its first model).
+Structure read_topology(const std::string& file, const StructureOptions& options);
+
 // The frames of `topology` and `trajectories`:
 // - no trajectory: every model of `topology` (a multi-model PDB or mmCIF);
 // - structure files: `topology` and each of them, one frame each (an
@@ -70,12 +74,20 @@ public:
 std::unique_ptr<FrameSource> open_frames(const std::string& topology, const std::vector<std::string>& trajectories,
                                          const StructureOptions& options);
 
-// Frames given as coordinates (Python's arrays): coordinates[k] holds
-// every atom of `topology`'s model in its file order (Atom::file_index),
-// A; times[k] (or k if empty).
-std::unique_ptr<FrameSource> frames_from_coordinates(Structure topology,
-                                                     std::vector<std::vector<alpha::Vec3>> coordinates,
-                                                     std::vector<double> times = {});
+// One frame's coordinates: every atom of a topology's model in its file
+// order (Atom::file_index), A, and its time.
+struct TimedCoordinates {
+  double time = 0;  // ps
+  std::vector<alpha::Vec3> x;
+};
+using CoordinatesFunction = std::function<std::optional<TimedCoordinates>()>;
+
+// Frames given one at a time by `next` (Python's arrays and iterators),
+// nothing at the end; called from the thread that runs track(), one frame
+// at a time, so that only the frames in flight are held. Frame k is named
+// "frame k"; a frame without the topology's atom count throws alpha::Error
+// (bad input).
+std::unique_ptr<FrameSource> frames_from_function(Structure topology, CoordinatesFunction next);
 
 struct TrackOptions {
   AnalysisOptions analysis;  // each frame's search, as `pockets` runs it

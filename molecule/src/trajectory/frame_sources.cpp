@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The frame sources of molecule/track.hpp: the models of one file, a list
-// of structure files, coordinates given as arrays.
+// of structure files, trajectory files, coordinates given by a function.
 #include <utility>
 
 #include "alpha/error.hpp"
@@ -48,40 +48,34 @@ private:
   std::string name_;
 };
 
-// Coordinates of every atom of the topology's model, in its file order.
-class CoordinateFrames : public FrameSource {
+// Coordinates of every atom of the topology's model, in its file order,
+// one frame at a time from a function.
+class FunctionFrames : public FrameSource {
 public:
-  CoordinateFrames(Structure topology, std::vector<std::vector<alpha::Vec3>> coordinates, std::vector<double> times)
-      : topology_(std::move(topology)), coordinates_(std::move(coordinates)), times_(std::move(times)) {
-    if (!times_.empty() && times_.size() != coordinates_.size())
-      throw alpha::Error(std::to_string(times_.size()) + " times for " + std::to_string(coordinates_.size()) +
-                             " frames",
-                         alpha::ErrorKind::Misuse);
-    const std::size_t need = topology_.report.atoms_in_model;
-    for (std::size_t k = 0; k < coordinates_.size(); ++k)
-      if (coordinates_[k].size() != need)
-        throw alpha::Error("frame " + std::to_string(k) + " has " + std::to_string(coordinates_[k].size()) +
-                               " atoms, but the topology has " + std::to_string(need),
-                           alpha::ErrorKind::BadInput);
-  }
+  FunctionFrames(Structure topology, CoordinatesFunction next)
+      : topology_(std::move(topology)), next_(std::move(next)) {}
 
   std::optional<Frame> next() override {
-    if (next_ == coordinates_.size()) return std::nullopt;
+    std::optional<TimedCoordinates> c = next_();
+    if (!c) return std::nullopt;
+    const std::size_t need = topology_.report.atoms_in_model;
+    if (c->x.size() != need)
+      throw alpha::Error("frame " + std::to_string(index_) + " has " + std::to_string(c->x.size()) +
+                             " atoms, but the topology has " + std::to_string(need),
+                         alpha::ErrorKind::BadInput);
     Frame f;
-    f.index = next_;
-    f.time = times_.empty() ? double(next_) : times_[next_];
-    f.name = "frame " + std::to_string(next_);
+    f.index = index_;
+    f.time = c->time;
+    f.name = "frame " + std::to_string(index_++);
     f.structure = topology_;
-    for (Atom& a : f.structure.atoms) a.position = coordinates_[next_][a.file_index];
-    std::vector<alpha::Vec3>().swap(coordinates_[next_++]);  // memory given back as the frames are used
+    for (Atom& a : f.structure.atoms) a.position = c->x[a.file_index];
     return f;
   }
 
 private:
   Structure topology_;
-  std::vector<std::vector<alpha::Vec3>> coordinates_;
-  std::vector<double> times_;
-  std::size_t next_ = 0;
+  CoordinatesFunction next_;
+  std::size_t index_ = 0;
 };
 
 // The frames of trajectory files, their atoms those of the topology.
@@ -121,6 +115,8 @@ private:
   std::string name_;
 };
 
+}  // namespace
+
 Structure read_topology(const std::string& file, const StructureOptions& options) {
   if (!is_gro_file(file)) return read_structure(file, options);
   std::string text;
@@ -131,8 +127,6 @@ Structure read_topology(const std::string& file, const StructureOptions& options
   }
   return parse_structure(gro_as_pdb(text, file), file, options);
 }
-
-}  // namespace
 
 std::unique_ptr<FrameSource> open_frames(const std::string& topology, const std::vector<std::string>& trajectories,
                                          const StructureOptions& options) {
@@ -154,10 +148,8 @@ std::unique_ptr<FrameSource> open_frames(const std::string& topology, const std:
   return std::make_unique<StructureFrames>(std::move(files), options);
 }
 
-std::unique_ptr<FrameSource> frames_from_coordinates(Structure topology,
-                                                     std::vector<std::vector<alpha::Vec3>> coordinates,
-                                                     std::vector<double> times) {
-  return std::make_unique<CoordinateFrames>(std::move(topology), std::move(coordinates), std::move(times));
+std::unique_ptr<FrameSource> frames_from_function(Structure topology, CoordinatesFunction next) {
+  return std::make_unique<FunctionFrames>(std::move(topology), std::move(next));
 }
 
 }  // namespace molecule
