@@ -5,6 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -277,10 +280,23 @@ void check_invariants(const Balls& b, const Cavities& cav) {
   }
 }
 
+// Bit for bit: every field of the two cavities (a NaN equal to itself).
 bool same(const Cavity& a, const Cavity& b) {
-  return a.cells == b.cells && a.sa_volume == b.sa_volume && a.sa_area == b.sa_area && a.score == b.score &&
-         a.center == b.center && a.lining_atoms == b.lining_atoms && a.mouths.size() == b.mouths.size() &&
-         a.depth == b.depth && a.close_alpha_sq == b.close_alpha_sq;
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto numbers = [&](const Cavity& c) {
+    return std::array{bits(c.sa_volume),    bits(c.sa_area),      bits(c.ms_volume),        bits(c.ms_area),
+                      bits(c.depth),        bits(c.center.x),     bits(c.center.y),         bits(c.center.z),
+                      bits(c.max_alpha_sq), bits(c.max_probe_radius), bits(c.close_alpha_sq), bits(c.fill_alpha_sq),
+                      bits(c.mouth_area),   bits(c.buriedness),   bits(c.score),            bits(c.ligandability),
+                      bits(c.probability)};
+  };
+  const auto mouths = [&](const Cavity& c) {
+    std::vector<std::tuple<std::vector<Index>, std::uint64_t, bool>> m;
+    for (const molecule::Mouth& x : c.mouths) m.emplace_back(x.triangles, bits(x.area), x.to_outside);
+    return m;
+  };
+  return a.cells == b.cells && a.lining_atoms == b.lining_atoms && a.sinks == b.sinks &&
+         a.burial_atoms == b.burial_atoms && mouths(a) == mouths(b) && numbers(a) == numbers(b);
 }
 
 }  // namespace

@@ -117,6 +117,16 @@ TEST_CASE("tunnel paths: from inside a cage with one window, the tunnel leaves t
   CHECK(p.mouth.z >= 6 * std::cos(cap) - 1e-9);  // the window (or beyond)
   check_path(a, p, o);
   for (const TunnelPath& q : paths) CHECK(q.bottleneck_radius <= p.bottleneck_radius + 1e-12);
+  // A start point is taken to the nearest node the probe fits in, however
+  // far it lies: the same widest tunnel.
+  const std::vector<molecule::TunnelStart> far{{"far", {}, {1e6, 0, 0}}};
+  const std::vector<TunnelPath> from_far = molecule::find_tunnel_paths(*a.ac, a.radii, far, o);
+  REQUIRE(!from_far.empty());
+  CHECK(from_far.front().bottleneck_radius == p.bottleneck_radius);
+  // A probe wider than the window (1.4): no tunnel, no error.
+  TunnelOptions wide = o;
+  wide.probe = 3;
+  CHECK(molecule::find_tunnel_paths(*a.ac, a.radii, starts, wide).empty());
   // Closed (the window's ring moved into the sphere's points): no tunnel.
   Atoms closed;
   closed.add(testing::cage_points(200, 6, 0, 0), 1.6);
@@ -132,9 +142,6 @@ TEST_CASE("tunnel paths: bad input is refused", "[tunnels]") {
   TunnelOptions o;
   o.probe = 0;
   CHECK_THROWS_AS(molecule::find_tunnel_paths(ac, a.radii, {}, o), alpha::Error);
-  // A start far away, or in no cell the probe fits: no tunnel, no error.
-  const std::vector<molecule::TunnelStart> far{{"far", {}, {1e6, 0, 0}}};
-  CHECK(molecule::find_tunnel_paths(ac, a.radii, far, {}).empty());
 }
 
 TEST_CASE("radius file: HOLE's simple.rad and the native format", "[tunnels][radii]") {

@@ -10,7 +10,8 @@
 #   all       the exit code; on an error, stdout empty and exactly one
 #             "ERROR: " line on stderr, the last one, matching the row's
 #             message (the other lines, if any, are [info]/[warning] logs);
-#             on success the message, if any, matches a stderr line; the
+#             on success the message, if any, matches a line of stderr or
+#             stdout (the summary); the
 #             working directory holds nothing but OUTDIR afterwards;
 #   pockets   on an error, OUTDIR absent if it did not exist, and
 #             byte-for-byte untouched if it held a previous run; on a
@@ -144,7 +145,7 @@ if [[ $exit_code -ne 0 ]]; then
     [[ $(snapshot "$out") == "$before" ]] || fail "OUTDIR changed: $(snapshot "$out" | tr '\n' ' ')"
   fi
 else
-  [[ $message == - ]] || grep -qE "$pattern" "$tmp/err" || fail "no stderr line matches '$pattern'"
+  [[ $message == - ]] || cat "$tmp/err" "$tmp/out" | grep -qE "$pattern" || fail "no stderr or stdout line matches '$pattern'"
   case $command in
     pockets)
       [[ -s $out/report.json && $(head -c 8 "$out/report.json") != previous ]] || fail "report.json not written"
