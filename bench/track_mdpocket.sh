@@ -49,7 +49,7 @@ awk '{print $3}' "$work/runs" | median | xargs printf 'median ours: %s s a frame
 "$exe" track "${files[@]}" -j 1 -o "$work/ours" -v 2>&1 >/dev/null | grep -o '[0-9]* frames, .* s a frame: .*rest' |
   sed 's/^/where our time goes: /'
 
-python3 - "$work/mdp_freq_grid.dx" "$work/ours/frequency.dx" <<'EOF'
+/usr/bin/python3 - "$work/mdp_freq.dx" "$work/ours/frequency.dx" <<'EOF'
 import sys
 import numpy as np
 

@@ -22,7 +22,8 @@ namespace py = pybind11;
 namespace alphapocket_python {
 namespace {
 
-// The next (time, coordinates (N, 3) in A) of `frames`, nothing at its end.
+// The next (time in ps or None, coordinates (N, 3) in A) of `frames`,
+// nothing at its end.
 std::optional<molecule::TimedCoordinates> next_frame(py::iterator& frames) {
   py::gil_scoped_acquire gil;
   if (frames == py::iterator::sentinel()) return std::nullopt;
@@ -33,7 +34,7 @@ std::optional<molecule::TimedCoordinates> next_frame(py::iterator& frames) {
   if (xyz.ndim() != 2 || xyz.shape(1) != 3)
     throw alpha::Error("a frame's coordinates: expected an array of shape (atoms, 3)", alpha::ErrorKind::Misuse);
   molecule::TimedCoordinates c;
-  c.time = item[0].cast<double>();
+  if (!item[0].is_none()) c.time = item[0].cast<double>();
   c.x.resize(xyz.shape(0));
   const auto r = xyz.unchecked<2>();
   for (py::ssize_t i = 0; i < xyz.shape(0); ++i) c.x[i] = {r(i, 0), r(i, 1), r(i, 2)};

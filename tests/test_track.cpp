@@ -18,6 +18,7 @@
 #include "trajectory/track_outputs.hpp"
 #include "trajectory/frame_cavities.hpp"
 #include "trajectory/pocket_tracker.hpp"
+#include "trajectory/volume_plot.hpp"
 
 using namespace molecule;
 
@@ -244,4 +245,42 @@ TEST_CASE("the CHK1 ensemble's frequency map finds the ATP site of mdpocket's 0.
       if (r.observations[o].frame == 0 && near(r.observations[o].center, ligand, 3)) site_tracked = true;
   }
   CHECK(site_tracked);
+}
+
+TEST_CASE("volumes.svg keeps round axes for one frame and no pocket, and names its time axis", "[track]") {
+  // The tick labels of the plot: its <text> elements' contents.
+  const auto labels = [](const std::string& svg) {
+    std::vector<std::string> out;
+    for (std::size_t at = svg.find("<text"); at != std::string::npos; at = svg.find("<text", at + 1)) {
+      const std::size_t from = svg.find('>', at) + 1;
+      out.push_back(svg.substr(from, svg.find('<', from) - from));
+    }
+    return out;
+  };
+  TrackResult r;
+  r.frames.resize(1);
+  std::string svg = volume_plot_svg(r, {});
+  std::vector<std::string> text = labels(svg);
+  for (const std::string& t : text) CHECK(t.find("e-") == std::string::npos);  // not 2e-10
+  CHECK(std::count(text.begin(), text.end(), "1") == 2);  // 0..1 frame, 0..1 A^3
+  CHECK(std::find(text.begin(), text.end(), "frame") != text.end());
+  CHECK(std::find(text.begin(), text.end(), "no pocket in any frame") != text.end());
+  // A trajectory's pocket over 0.2 ps.
+  r.time_in_ps = true;
+  r.frames.resize(3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    r.frames[k].time = 0.1 * double(k);
+    r.observations.push_back({});
+    r.observations.back().frame = k;
+    r.observations.back().sa_volume = 10 + double(k);
+  }
+  r.tracks.resize(1);
+  r.tracks[0].id = 1;
+  r.tracks[0].observations = {0, 1, 2};
+  svg = volume_plot_svg(r, {0});
+  text = labels(svg);
+  CHECK(std::find(text.begin(), text.end(), "time (ps)") != text.end());
+  CHECK(std::find(text.begin(), text.end(), "0.2") != text.end());
+  CHECK(std::find(text.begin(), text.end(), "pocket 1 (100%)") != text.end());
+  CHECK(svg.find("<polyline") != std::string::npos);
 }

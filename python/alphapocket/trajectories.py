@@ -65,7 +65,7 @@ def _universe_frames(universe):
 
 def _array_frames(coordinates, times):
     for k, xyz in enumerate(coordinates):
-        yield (k if times is None else float(times[k])), xyz
+        yield (None if times is None else float(times[k])), xyz
 
 
 def track(frames, topology=None, times=None, **options):

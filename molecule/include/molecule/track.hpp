@@ -47,6 +47,7 @@ namespace molecule {
 struct Frame {
   std::size_t index = 0;  // position in the input, from 0 (before --begin/--stride)
   double time = 0;        // ps for trajectories; the index for models and file lists
+  bool time_in_ps = false;  // a trajectory's time, not an index
   std::string name;       // for messages: "1l2y.pdb model 3", "3pa3.pdb", "md.xtc frame 12"
   Structure structure;
 };
@@ -77,7 +78,7 @@ std::unique_ptr<FrameSource> open_frames(const std::string& topology, const std:
 // One frame's coordinates: every atom of a topology's model in its file
 // order (Atom::file_index), A, and its time.
 struct TimedCoordinates {
-  double time = 0;  // ps
+  std::optional<double> time;  // ps; none: the frame's number
   std::vector<alpha::Vec3> x;
 };
 using CoordinatesFunction = std::function<std::optional<TimedCoordinates>()>;

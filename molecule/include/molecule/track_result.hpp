@@ -84,6 +84,7 @@ struct TrackResult {
   // the 2 A cube centred on the grid point (mdpocket's density).
   std::vector<float> density;
   Structure first_structure;  // the first frame's atoms, for the viewer script
+  bool time_in_ps = false;    // frames' times are a trajectory's (else frame numbers)
   double transient = 0.5;     // TrackOptions::transient
   double seconds = 0;         // the whole run, wall clock
 

@@ -65,7 +65,8 @@ public:
                          alpha::ErrorKind::BadInput);
     Frame f;
     f.index = index_;
-    f.time = c->time;
+    f.time = c->time.value_or(double(index_));
+    f.time_in_ps = c->time.has_value();
     f.name = "frame " + std::to_string(index_++);
     f.structure = topology_;
     for (Atom& a : f.structure.atoms) a.position = c->x[a.file_index];
@@ -100,6 +101,7 @@ public:
     Frame f;
     f.index = index_++;
     f.time = c->time;
+    f.time_in_ps = true;
     f.name = name_ + " frame " + std::to_string(in_file_++);
     f.structure = topology_;
     for (Atom& a : f.structure.atoms) a.position = c->x[a.file_index];

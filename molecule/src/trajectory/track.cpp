@@ -45,6 +45,7 @@ TrackResult track(FrameSource& frames, const TrackOptions& options, const std::f
       if (result.frames.empty() && batch.empty()) {
         result.grid = grid_around(f->structure.atoms, options.grid_spacing, options.grid_margin);
         result.first_structure = f->structure;
+        result.time_in_ps = f->time_in_ps;
         in_cavity.assign(result.grid.size(), 0);
         density.assign(result.grid.size(), 0);
       }

@@ -22,8 +22,9 @@ double tick_step(double hi) {
 
 std::string volume_plot_svg(const TrackResult& r, const std::vector<std::size_t>& tracks) {
   constexpr double W = 800, H = 450, left = 70, right = 170, top = 30, bottom = 60;
-  const double t0 = r.frames.front().time, t1 = std::max(r.frames.back().time, t0 + 1e-9);
-  double vmax = 0;
+  // At least one frame's and one A^3's span: one frame, or no pocket, keeps round ticks.
+  const double t0 = r.frames.front().time, t1 = std::max(r.frames.back().time, t0 + (r.time_in_ps ? 1e-3 : 1));
+  double vmax = 1;
   for (std::size_t t : tracks)
     for (std::size_t o : r.tracks[t].observations) vmax = std::max(vmax, r.observations[o].sa_volume);
   const double vstep = tick_step(vmax), vtop = std::max(vstep, std::ceil(vmax / vstep) * vstep);
@@ -45,10 +46,13 @@ std::string volume_plot_svg(const TrackResult& r, const std::vector<std::size_t>
                      x(t), H - bottom, H - bottom + 5, H - bottom + 20, t);
   s += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", left, top,
                    W - left - right, H - top - bottom);
-  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">time (frame for ensembles, ps for trajectories)</text>\n",
-                   (left + W - right) / 2, H - 15);
-  s += fmt::format("<text transform=\"translate(18 {}) rotate(-90)\" text-anchor=\"middle\">SA volume (A^3)</text>\n",
+  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", (left + W - right) / 2, H - 15,
+                   r.time_in_ps ? "time (ps)" : "frame");
+  s += fmt::format("<text transform=\"translate(18 {}) rotate(-90)\" text-anchor=\"middle\">SA volume (\u00c5\u00b3)</text>\n",
                    (top + H - bottom) / 2);
+  if (tracks.empty())
+    s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">no pocket in any frame</text>\n",
+                     (left + W - right) / 2, (top + H - bottom) / 2);
   for (std::size_t k = 0; k < tracks.size(); ++k) {
     const Track& track = r.tracks[tracks[k]];
     const Rgb c = rank_color(k + 1);
