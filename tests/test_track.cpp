@@ -14,11 +14,14 @@
 
 #include <catch2/catch.hpp>
 
+#include "alpha/input_file.hpp"
 #include "molecule/track.hpp"
 #include "trajectory/track_outputs.hpp"
 #include "trajectory/frame_cavities.hpp"
+#include "trajectory/pdb_models.hpp"
 #include "trajectory/pocket_tracker.hpp"
 #include "trajectory/volume_plot.hpp"
+#include "util/gunzip.hpp"
 
 using namespace molecule;
 
@@ -283,4 +286,40 @@ TEST_CASE("volumes.svg keeps round axes for one frame and no pocket, and names i
   CHECK(std::find(text.begin(), text.end(), "0.2") != text.end());
   CHECK(std::find(text.begin(), text.end(), "pocket 1 (100%)") != text.end());
   CHECK(svg.find("<polyline") != std::string::npos);
+}
+
+TEST_CASE("a multi-model PDB file's models one at a time are the models parsed whole", "[track]") {
+  const std::string text = gunzip(alpha::read_input_file(kData + "/1l2y.pdb.gz"), "1l2y.pdb.gz", 1 << 24);
+  const std::vector<Structure> whole = parse_models(text, "1l2y.pdb");
+  const PdbModels models(text);
+  REQUIRE(models.size() == 38);
+  REQUIRE(whole.size() == 38);
+  for (const std::size_t k : {0u, 1u, 17u, 37u}) {
+    const Structure one = parse_structure(models.text(k), "1l2y.pdb");
+    CHECK(one.report.model == whole[k].report.model);
+    REQUIRE(one.atoms.size() == whole[k].atoms.size());
+    for (std::size_t i = 0; i < one.atoms.size(); ++i) {
+      CHECK(one.atoms[i].position.x == whole[k].atoms[i].position.x);
+      CHECK(one.atoms[i].position.z == whole[k].atoms[i].position.z);
+    }
+  }
+  // A bad line in a later model: the file's line number in the message.
+  std::string broken = text;
+  const std::size_t model3 = broken.find("MODEL        3");
+  const std::size_t line = broken.find("\nATOM", model3 + 500) + 1;
+  broken.replace(line + 30, 8, "  x.y.z ");
+  std::string whole_message, one_message;
+  try {
+    parse_models(broken, "1l2y.pdb");
+  } catch (const std::exception& e) {
+    whole_message = e.what();
+  }
+  try {
+    parse_structure(PdbModels(broken).text(2), "1l2y.pdb");
+  } catch (const std::exception& e) {
+    one_message = e.what();
+  }
+  CHECK(!whole_message.empty());
+  CHECK(one_message == whole_message);
+  CHECK(PdbModels("ATOM      1  N   ASN A   1      -6.919   6.901   0.917  1.00  0.00           N\n").size() == 0);
 }

@@ -8,44 +8,87 @@
 #include "molecule/track.hpp"
 #include "trajectory/coordinate_reader.hpp"
 #include "trajectory/gro_topology.hpp"
+#include "trajectory/pdb_models.hpp"
+#include "util/gunzip.hpp"
 
 namespace molecule {
 namespace {
 
 // The models of a multi-model file, then each further structure file's.
+// A PDB file's models are parsed one at a time (PdbModels); an mmCIF
+// file's all at once.
 class StructureFrames : public FrameSource {
 public:
   StructureFrames(std::vector<std::string> files, const StructureOptions& options)
-      : files_(std::move(files)), options_(options) {}
+      : files_(std::move(files)), options_(options) {
+    options_.model = 0;  // each model text holds one
+  }
 
   std::optional<Frame> next() override {
-    while (model_ == models_.size()) {
+    while (model_ == count_) {
       if (file_ == files_.size()) return std::nullopt;
-      const std::string& file = files_[file_++];
-      std::string text;
+      name_ = files_[file_++];
       try {
-        text = alpha::read_input_file(file);
+        text_ = alpha::read_input_file(name_);
       } catch (const alpha::Error& e) {
         throw StructureError(e.what(), e.kind());
       }
-      models_ = parse_models(text, file, options_);
+      pdb_.reset();
+      parsed_.clear();
+      unzipped_.clear();
+      if (is_gzip(text_)) {
+        try {
+          unzipped_ = gunzip(text_, name_, options_.max_input_mib << 20);
+        } catch (const alpha::Error& e) {
+          throw StructureError(e.what(), e.kind());
+        }
+      }
+      if (!is_mmcif_name(name_)) pdb_.emplace(unzipped_.empty() ? text_ : unzipped_);
+      if (pdb_ && pdb_->size() > 1) {
+        count_ = pdb_->size();
+      } else {
+        pdb_.reset();
+        parsed_ = parse_models(text_, name_, options_);
+        count_ = parsed_.size();
+      }
       model_ = 0;
-      name_ = file;
     }
     Frame f;
     f.index = index_;
     f.time = double(index_++);
-    f.name = models_.size() > 1 ? name_ + " model " + std::to_string(models_[model_].report.model) : name_;
-    f.structure = std::move(models_[model_++]);
+    f.structure = pdb_ ? model(model_) : std::move(parsed_[model_]);
+    f.name = count_ > 1 ? name_ + " model " + std::to_string(f.structure.report.model) : name_;
+    ++model_;
     return f;
   }
 
 private:
+  // Model k of a multi-model PDB file, parsed from its text (decompressed:
+  // parsed under the name without .gz, messages given the file's name).
+  Structure model(std::size_t k) const {
+    if (unzipped_.empty() || !name_.ends_with(".gz")) return parse_structure(pdb_->text(k), name_, options_);
+    const std::string plain = name_.substr(0, name_.size() - 3);
+    try {
+      Structure s = parse_structure(pdb_->text(k), plain, options_);
+      s.report.gzipped = true;
+      return s;
+    } catch (const StructureError& e) {
+      const std::string message = e.what();
+      throw StructureError(message.starts_with(plain) ? name_ + message.substr(plain.size()) : message, e.kind());
+    }
+  }
+
+  static bool is_mmcif_name(std::string name) {
+    if (name.ends_with(".gz")) name.resize(name.size() - 3);
+    return name.ends_with(".cif") || name.ends_with(".mmcif");
+  }
+
   std::vector<std::string> files_;
   StructureOptions options_;
-  std::size_t file_ = 0, model_ = 0, index_ = 0;
-  std::vector<Structure> models_;  // of the file being read
-  std::string name_;
+  std::size_t file_ = 0, model_ = 0, count_ = 0, index_ = 0;
+  std::string text_, unzipped_, name_;  // of the file being read (its bytes, decompressed if gzip)
+  std::optional<PdbModels> pdb_;     // its models, when a multi-model PDB file
+  std::vector<Structure> parsed_;    // else its models, parsed
 };
 
 // Coordinates of every atom of the topology's model, in its file order,
