@@ -154,6 +154,7 @@ TEST_CASE("ligandability: every feature of a hand-made cavity, computed by hand"
   void_site.burial_atoms = 9, void_site.score = 4;
   cavities.pockets = {pocket};
   cavities.voids = {void_site};
+  cavities.sa_area = 900;
   const molecule::SiteFeatures features(s, cavities);
   const std::vector<double> f = features(cavities.pockets[0]);
   const std::vector<std::string>& names = molecule::site_feature_names();
@@ -179,7 +180,10 @@ TEST_CASE("ligandability: every feature of a hand-made cavity, computed by hand"
       {"res_hydrophobic", 3 / 5.0}, {"res_aromatic", 1 / 5.0}, {"res_polar", 0}, {"res_positive", 1 / 5.0},
       {"res_negative", 1 / 5.0}, {"res_gly", 0}, {"res_pro", 0}, {"hydropathy", -0.9 / 5},
       // B z-scores -1.5 -1 -0.5 0 0.5 1
-      {"b_zscore", -1.5 / 6}};
+      {"b_zscore", -1.5 / 6},
+      // one chain, no other copy of the site, no ion; 90 of the molecule's 900 A^2
+      {"lining_chains", 1}, {"interchain_share", 0}, {"repeat_chains", 0}, {"metal_ions", 0},
+      {"surface_share", 0.1}, {"structure_chains", 1}};
   REQUIRE(expected.size() == names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
     INFO(names[k]);
@@ -189,6 +193,110 @@ TEST_CASE("ligandability: every feature of a hand-made cavity, computed by hand"
   const std::vector<double> v = features(cavities.voids[0]);
   CHECK(v[0] == 1);  // is_void
   CHECK(v[std::find(names.begin(), names.end(), "score_rank") - names.begin()] == 1);
+}
+
+TEST_CASE("ligandability: whole-entry features of a hand-made entry of five chains", "[ligandability]") {
+  // Pocket 1 at the origin: four atoms of chain A and two of chain B line
+  // it. Its residues by name and number (ALA 1, PHE 2, ASP 3, LYS 4) come
+  // back in chain B's pocket 2 (the same), chain D's pocket 4 (3 of 5:
+  // Jaccard 0.6) but not chain E's pocket 5 (1 of 6); chain C's pocket 3 has
+  // others. Ions: ZN 5 A from pocket 1's centre, MG 9 A away, and a
+  // chloride at 2 A (no metal).
+  const auto atom = [](const char* chain, const char* residue, int number, alpha::Vec3 p) {
+    molecule::Atom a;
+    a.chain = chain, a.residue_name = residue, a.seq_num = number, a.name = "CA", a.element = "C";
+    a.position = p, a.radius = 1.7;
+    return a;
+  };
+  molecule::Structure s;
+  s.atoms = {atom("A", "ALA", 1, {3, 0, 0}),    atom("A", "PHE", 2, {0, 3, 0}),    atom("A", "ASP", 3, {-3, 0, 0}),
+             atom("A", "LYS", 4, {0, -3, 0}),   atom("B", "ALA", 1, {0, 0, 3}),    atom("B", "PHE", 2, {0, 0, -3}),
+             atom("B", "ASP", 3, {40, 0, 0}),   atom("B", "LYS", 4, {40, 3, 0}),   atom("C", "GLY", 7, {80, 0, 0}),
+             atom("C", "PRO", 8, {80, 3, 0}),   atom("D", "ALA", 1, {0, 40, 0}),   atom("D", "PHE", 2, {3, 40, 0}),
+             atom("D", "ASP", 3, {0, 43, 0}),   atom("D", "GLY", 9, {0, 40, 3}),   atom("E", "ALA", 1, {0, 80, 0}),
+             atom("E", "GLY", 9, {3, 80, 0}),   atom("E", "GLY", 10, {0, 83, 0})};
+  const auto ion = [](const char* name, const char* element, alpha::Vec3 p) {
+    molecule::HeteroGroup g;
+    g.residue_name = name, g.chain = "A", g.atoms = {molecule::Atom{}};
+    g.atoms[0].element = element, g.atoms[0].position = p;
+    return g;
+  };
+  s.hetero_groups = {ion("ZN", "Zn", {0, 0, 5}), ion("MG", "Mg", {0, 9, 0}), ion("CL", "Cl", {0, 0, 2})};
+  const auto pocket = [](std::vector<alpha::Index> lining, alpha::Vec3 center) {
+    molecule::Cavity c;
+    c.lining_atoms = std::move(lining), c.center = center, c.sa_area = 50;
+    return c;
+  };
+  molecule::Cavities cavities;
+  cavities.pockets = {pocket({0, 1, 2, 3, 4, 5}, {0, 0, 0}), pocket({4, 5, 6, 7}, {40, 0, 0}),
+                      pocket({8, 9}, {80, 0, 0}), pocket({10, 11, 12, 13}, {0, 40, 0}),
+                      pocket({14, 15, 16}, {0, 80, 0})};
+  cavities.sa_area = 1000;
+  const molecule::SiteFeatures features(s, cavities);
+  const std::vector<std::string>& names = molecule::site_feature_names();
+  const auto value = [&](std::size_t pocket_index, const char* name) {
+    return features(cavities.pockets[pocket_index])[std::find(names.begin(), names.end(), name) - names.begin()];
+  };
+  CHECK(value(0, "lining_chains") == 2);
+  CHECK(value(0, "interchain_share") == Approx(2 / 6.0).margin(1e-12));
+  CHECK(value(0, "repeat_chains") == 2);  // B and D
+  CHECK(value(0, "metal_ions") == 1);
+  CHECK(value(0, "surface_share") == Approx(0.05).margin(1e-12));
+  CHECK(value(0, "structure_chains") == 5);
+  CHECK(value(1, "lining_chains") == 1);  // B's copy, lined by B alone
+  CHECK(value(1, "interchain_share") == 0);
+  CHECK(value(1, "repeat_chains") == 2);  // A and D
+  CHECK(value(2, "lining_chains") == 1);
+  CHECK(value(2, "repeat_chains") == 0);
+  CHECK(value(2, "metal_ions") == 0);
+  CHECK(value(4, "repeat_chains") == 0);
+}
+
+TEST_CASE("ligandability: a homo-dimer built from 1fkgA repeats its sites; an added zinc ion is seen",
+          "[ligandability]") {
+  const molecule::Structure monomer = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/1fkgA.pdb");
+  alpha::Vec3 centroid{};
+  for (const molecule::Atom& a : monomer.atoms) centroid = centroid + (1.0 / double(monomer.atoms.size())) * a.position;
+  molecule::Structure dimer = monomer;
+  for (const molecule::Atom& a : monomer.atoms) {
+    molecule::Atom b = a;
+    b.chain = "B";  // turned half a turn about z, its centroid 128 A from the first's: no site touches both
+    b.position = {2 * centroid.x + 128 - a.position.x, 2 * centroid.y - a.position.y, a.position.z};
+    dimer.atoms.push_back(b);
+  }
+  const std::vector<std::string>& names = molecule::site_feature_names();
+  const auto column = [&](const char* name) { return std::find(names.begin(), names.end(), name) - names.begin(); };
+  const molecule::PocketSearch one = molecule::search_pockets(monomer, {});
+  const molecule::SiteFeatures one_features(monomer, one.cavities);
+  for (const molecule::Site& site : molecule::site_candidates(one.cavities)) {
+    const std::vector<double> f = one_features(one.cavities.cavity(site));
+    CHECK(f[column("repeat_chains")] == 0);
+    CHECK(f[column("structure_chains")] == 1);
+  }
+  const molecule::PocketSearch two = molecule::search_pockets(dimer, {});
+  const molecule::SiteFeatures two_features(dimer, two.cavities);
+  const std::vector<molecule::Site> candidates = molecule::site_candidates(two.cavities);
+  CHECK(candidates.size() == 2 * molecule::site_candidates(one.cavities).size());  // each copy's own
+  REQUIRE(candidates.size() >= 4);
+  std::size_t repeated = 0;
+  for (const molecule::Site& site : candidates) {
+    const std::vector<double> f = two_features(two.cavities.cavity(site));
+    CHECK(f[column("lining_chains")] == 1);
+    CHECK(f[column("interchain_share")] == 0);
+    CHECK(f[column("structure_chains")] == 2);
+    CHECK(f[column("repeat_chains")] <= 1);
+    repeated += f[column("repeat_chains")] == 1;
+  }
+  INFO(candidates.size() << " candidate sites in the dimer");
+  CHECK(repeated >= candidates.size() * 9 / 10);  // a copy's site is the other's, up to rounding
+  // A zinc ion (not kept: hetero groups alone) 2 A from the top site's centre.
+  const molecule::Cavity& top = two.cavities.cavity(two.cavities.sites.front());
+  CHECK(two_features(top)[column("metal_ions")] == 0);
+  molecule::HeteroGroup zinc;
+  zinc.residue_name = "ZN", zinc.chain = "A", zinc.atoms = {molecule::Atom{}};
+  zinc.atoms[0].element = "Zn", zinc.atoms[0].position = top.center + alpha::Vec3{2, 0, 0};
+  dimer.hetero_groups.push_back(zinc);
+  CHECK(molecule::SiteFeatures(dimer, two.cavities)(top)[column("metal_ions")] == 1);
 }
 
 TEST_CASE("ligandability: the evaluator follows a hand-made model", "[ligandability]") {

@@ -124,11 +124,11 @@ def chain_count(path):
         return len({line[21] for line in f if line.startswith("ATOM")})
 
 
-def run_alphapocket(exe, dataset, work, extra):
+def run_alphapocket(exe, dataset, work, extra, first=None):
     """Features of every cavity of every structure: list of (name, header, rows, ligands, buried surface
     points, whether the entry's ligand copies are one target, protein chains). The meshes are no features:
     a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take no time."""
-    entries = dataset_entries(dataset)
+    entries = dataset_entries(dataset)[:first]
     copies = not any(f.endswith(".ds") for f in os.listdir(dataset))
     os.makedirs(work, exist_ok=True)
 
@@ -347,8 +347,9 @@ def main():
     ap.add_argument("--label", default="dca", choices=["dca", "dcc", "both"])
     ap.add_argument("--all-cavities", action="store_true", help="fit on every cavity, not the sites only")
     ap.add_argument("--drop", default="", help="comma-separated features to leave out (for experiments)")
-    ap.add_argument("--train", default="pockets-train",
-                    help="comma-separated sets of --data to fit on (the shipped model: pockets-train)")
+    ap.add_argument("--train", default="pockets-train,pockets-train-pb:34",
+                    help="comma-separated sets of --data to fit on, SET:N for the first N of a set (the shipped "
+                         "model: pockets-train and the first 34 entries of pockets-train-pb)")
     ap.add_argument("--dev", default="pockets-dev",
                     help="comma-separated sets only predicted, to choose and report (pockets-dev among them: the "
                          "test fixture is its sites'); e.g. pockets-dev,pockets-dev-pb")
@@ -366,14 +367,17 @@ def main():
 
     def load(sets):
         structures, set_of = [], []
-        for name in sets:
-            st = run_alphapocket(a.alphapocket, os.path.join(a.data, name), os.path.join(a.work, name), [])
+        for spec in sets:  # SET or SET:N, the first N structures of SET (in its order)
+            name, _, first = spec.partition(":")
+            st = run_alphapocket(a.alphapocket, os.path.join(a.data, name), os.path.join(a.work, name), [],
+                                 int(first) if first else None)
             structures += st
             set_of += [name] * len(st)
         return structures, np.array(set_of)
     train, tset = load(a.train.split(","))
     dev, dset = load(a.dev.split(","))
-    if "pockets-dev" not in a.dev.split(",") or any(d in a.train.split(",") for d in a.dev.split(",")):
+    set_names = lambda specs: [s.partition(":")[0] for s in specs.split(",")]
+    if "pockets-dev" not in set_names(a.dev) or any(d in set_names(a.train) for d in set_names(a.dev)):
         raise SystemExit("--dev must hold pockets-dev (the test fixture) and no training set")
     names, X, dca, dcc, group, candidate, holds, centers, _, _ = table(train)
     dnames, dX, ddca, ddcc, dgroup, dcandidate, dholds, dcenters, dids, dcpp = table(dev)

@@ -22,6 +22,14 @@
 // polar (STNQ), positive (KRH), negative (DE), Gly, Pro, and their mean
 // Kyte-Doolittle hydropathy; the lining atoms' mean B-factor as a z-score
 // within their chain (0 where the chain's B-factors are all equal).
+// The whole entry (PDB entries of several chains, cofactors, ions): the
+// chains lining the cavity and the share of its lining atoms outside the
+// main one (a site between chains), the other chains holding the same site
+// (a candidate whose residues, by name and number, are at least half the
+// same: a homo-oligomer's copies), the metal ions (one-atom hetero groups,
+// whether kept or not) within 8 A of the centre, the cavity's share of the
+// molecule's SA area and the structure's chains. Other hetero groups are
+// no evidence here: in COACH420's files the ligand itself is one.
 #pragma once
 #include <string>
 #include <vector>
@@ -52,6 +60,13 @@ private:
   std::vector<double> b_zscore_;  // per atom
   std::vector<double> candidate_scores_;  // of site_candidates(cavities)
   double best_log_score_ = 0, best_burial_ = 0;
+  // Per candidate: its main chain and its residues (name, number).
+  std::vector<std::string> candidate_chains_;
+  std::vector<std::vector<std::pair<std::string, int>>> candidate_residues_;
+  std::size_t chains_ = 0;            // of the structure's atoms
+  std::vector<alpha::Vec3> metals_;   // metal ions among the hetero groups
+
+  std::vector<std::pair<std::string, int>> residue_keys(const Cavity& c) const;
 };
 
 // The features of every pocket, then every void, as CSV with a header:

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -75,6 +76,29 @@ bool is_void(const Cavities& cavities, const Cavity& c) {
   return !(&c >= cavities.pockets.data() && &c < cavities.pockets.data() + cavities.pockets.size());
 }
 
+constexpr double kMetalRadius = 8;          // A from the centre: a metal ion next to the site
+constexpr double kRepeatSimilarity = 0.5;   // Jaccard of residues: the same site in another chain
+
+// A metal ion: a one-atom hetero group that is no halide or other non-metal.
+bool is_metal_ion(const HeteroGroup& g) {
+  if (g.atoms.size() != 1) return false;
+  const std::string& e = g.atoms.front().element;
+  return !one_of(e, {"C", "N", "O", "S", "P", "F", "Cl", "Br", "I", "Se", "B", "Si", "X"});
+}
+
+// The chain most of the lining atoms belong to ("" for none), and how many
+// distinct chains line the cavity.
+std::pair<std::string, std::size_t> chains_of(const std::vector<Atom>& atoms, const std::vector<Index>& lining,
+                                              double* main_share) {
+  std::map<std::string, std::size_t> count;
+  for (Index i : lining) ++count[atoms[i].chain];
+  std::pair<std::string, std::size_t> best{"", 0};
+  for (const auto& [chain, n] : count)
+    if (n > best.second) best = {chain, n};
+  if (main_share) *main_share = lining.empty() ? 1.0 : double(best.second) / double(lining.size());
+  return {best.first, count.size()};
+}
+
 }  // namespace
 
 const std::vector<std::string>& site_feature_names() {
@@ -88,7 +112,9 @@ const std::vector<std::string>& site_feature_names() {
                           "burial_14_vs_best", "structure_sites", "structure_atoms", "frac_c", "frac_n", "frac_o",
                           "frac_s", "frac_backbone", "frac_aromatic", "frac_donor", "frac_acceptor",
                           "frac_positive", "frac_negative", "res_hydrophobic", "res_aromatic", "res_polar",
-                          "res_positive", "res_negative", "res_gly", "res_pro", "hydropathy", "b_zscore"})
+                          "res_positive", "res_negative", "res_gly", "res_pro", "hydropathy", "b_zscore",
+                          "lining_chains", "interchain_share", "repeat_chains", "metal_ions", "surface_share",
+                          "structure_chains"})
       n.push_back(s);
     return n;
   }();
@@ -130,6 +156,28 @@ SiteFeatures::SiteFeatures(const Structure& structure, const Cavities& cavities)
     best_burial_ = std::max(best_burial_, double(cavities.cavity(s).burial_atoms));
   }
   if (candidate_scores_.empty()) best_log_score_ = 0;
+
+  // Each candidate's residues by name and number (chain left out) and its
+  // main chain: the same site in another chain of a homo-oligomer.
+  for (const Site& s : site_candidates(cavities)) {
+    const Cavity& c = cavities.cavity(s);
+    candidate_chains_.push_back(chains_of(atoms, c.lining_atoms, nullptr).first);
+    candidate_residues_.push_back(residue_keys(c));
+  }
+  std::set<std::string> chains;
+  for (const Atom& a : atoms) chains.insert(a.chain);
+  chains_ = chains.size();
+  for (const HeteroGroup& g : structure.hetero_groups)
+    if (is_metal_ion(g)) metals_.push_back(g.atoms.front().position);
+}
+
+std::vector<std::pair<std::string, int>> SiteFeatures::residue_keys(const Cavity& c) const {
+  std::vector<std::pair<std::string, int>> keys;
+  for (Index i : residues_of(structure_.atoms, c.lining_atoms))
+    keys.emplace_back(structure_.atoms[i].residue_name, structure_.atoms[i].seq_num);
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
 }
 
 std::vector<double> SiteFeatures::operator()(const Cavity& c) const {
@@ -196,6 +244,27 @@ std::vector<double> SiteFeatures::operator()(const Cavity& c) const {
   for (double x : residue_counts) f.push_back(x / nr);
   f.push_back(kd / nr);
   f.push_back(b / na);
+
+  // The whole entry: chains lining the site and the share of its lining
+  // outside its main chain, the same site in other chains, metal ions next
+  // to it, its share of the molecule's surface, the entry's chains.
+  double main_share = 1;
+  const auto [main_chain, chains] = chains_of(atoms, c.lining_atoms, &main_share);
+  const std::vector<std::pair<std::string, int>> keys = residue_keys(c);
+  std::set<std::string> repeats;
+  for (std::size_t k = 0; k < candidate_residues_.size(); ++k) {
+    if (candidate_chains_[k] == main_chain || repeats.count(candidate_chains_[k])) continue;
+    const auto& other = candidate_residues_[k];
+    std::vector<std::pair<std::string, int>> common;
+    std::set_intersection(keys.begin(), keys.end(), other.begin(), other.end(), std::back_inserter(common));
+    const double joint = double(keys.size() + other.size() - common.size());
+    if (joint > 0 && double(common.size()) >= kRepeatSimilarity * joint) repeats.insert(candidate_chains_[k]);
+  }
+  std::size_t metals = 0;
+  for (const Vec3& m : metals_) metals += norm(m - c.center) <= kMetalRadius;
+  for (double x : {double(chains), 1 - main_share, double(repeats.size()), double(metals),
+                   cavities_.sa_area > 0 ? c.sa_area / cavities_.sa_area : 0.0, double(chains_)})
+    f.push_back(x);
   return f;
 }
 
