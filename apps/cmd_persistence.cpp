@@ -94,7 +94,7 @@ std::size_t append_lines(const alpha::AlphaComplex& ac, std::span<const alpha::P
 
 int run_persistence(const InputOptions& opt) {
   const AlphaInput in = load_alpha_complex(opt);
-  const alpha::AlphaComplex& ac = *in.complex;
+  const alpha::AlphaComplex& ac = in.shape.complex();
   Stopwatch pairs_time;
   const std::vector<alpha::PersistencePair>& pairs = ac.persistence();
   spdlog::info("persistence pairs: {:.3f} s", pairs_time.seconds());

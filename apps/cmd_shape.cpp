@@ -30,12 +30,12 @@ struct ShapeOptions {
 int run_shape(const ShapeOptions& opt) {
   molecule::check_mesh_file_name(opt.output);  // before the work
   const AlphaInput in = load_alpha_complex(opt.input);
-  const alpha::AlphaComplex& ac = *in.complex;
+  const alpha::AlphaComplex& ac = in.shape.complex();
   const alpha::Index level = ac.level(opt.alpha_sq);
   alpha::ShapeBoundary boundary = ac.boundary(level);
 
   molecule::TriangleMesh mesh;
-  const auto points = in.triangulation->points();
+  const auto points = in.shape.triangulation().points();
   mesh.points.assign(points.begin(), points.end());
   mesh.triangles = std::move(boundary.triangles);
   const molecule::MeshFileInfo info = molecule::write_mesh_file(opt.output, mesh);

@@ -70,8 +70,8 @@ void print_summary(const alpha::AlphaComplex& ac, const Sample& s) {
 
 int run_spectrum(const SpectrumOptions& opt) {
   const AlphaInput in = load_alpha_complex(opt.input);
-  const alpha::AlphaComplex& ac = *in.complex;
-  const alpha::Triangulation& t = *in.triangulation;
+  const alpha::AlphaComplex& ac = in.shape.complex();
+  const alpha::Triangulation& t = in.shape.triangulation();
 
   // optimal_level() >= 1: the critical value that completes the shape is
   // critical value number optimal - 1. Users feed the printed value back

@@ -222,7 +222,7 @@ void log_analysis(const molecule::Analysis& a, spdlog::level::level_enum level) 
   spdlog::log(level, "{}: {}", a.file, molecule::summary(a.structure.report));
   for (const std::string& warning : a.structure.report.warnings) spdlog::warn("{}: {}", a.file, warning);
   spdlog::log(level, "regular triangulation and alpha complex: {:.3f} s, {} atoms, {} finite cells",
-              a.search.complex_seconds, a.structure.atoms.size(), a.search.triangulation->num_finite_cells());
+              a.search.complex_seconds, a.structure.atoms.size(), a.search.shape->triangulation().num_finite_cells());
   spdlog::log(level, "cavities: {:.3f} s, {} pockets, {} voids, {} tunnels", a.search.cavities_seconds,
               c.pockets.size(), c.voids.size(), c.tunnels.size());
   if (a.radius_fallbacks > 0)
@@ -262,19 +262,17 @@ std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::str
 }
 
 AlphaInput load_alpha_complex(const InputOptions& opt) {
-  AlphaInput in;
   PointSet points = read_input(opt);
-  in.points = points.points.size();
+  const std::size_t count = points.points.size();
   Stopwatch build_time;
-  in.triangulation = triangulate(std::move(points), opt.file, opt.threads);
-  spdlog::info("{} triangulation: {:.3f} s, {} vertices, {} finite cells",
-               in.triangulation->weighted() ? "regular" : "Delaunay", build_time.seconds(),
-               in.triangulation->num_vertices(), in.triangulation->num_finite_cells());
+  std::unique_ptr<alpha::Triangulation> t = triangulate(std::move(points), opt.file, opt.threads);
+  spdlog::info("{} triangulation: {:.3f} s, {} vertices, {} finite cells", t->weighted() ? "regular" : "Delaunay",
+               build_time.seconds(), t->num_vertices(), t->num_finite_cells());
   Stopwatch complex_time;
-  in.complex = naming_file(opt.file,
-                           [&] { return std::make_unique<alpha::AlphaComplex>(*in.triangulation, opt.threads); });
+  AlphaInput in{count, naming_file(opt.file, [&] { return alpha::PointSetComplex(std::move(t), opt.threads); })};
   // Not the persistence pairs: they are computed when a command needs them.
-  spdlog::info("alpha complex: {:.3f} s, {} critical values", complex_time.seconds(), in.complex->spectrum_size());
+  spdlog::info("alpha complex: {:.3f} s, {} critical values", complex_time.seconds(),
+               in.shape.complex().spectrum_size());
   return in;
 }
 

@@ -13,8 +13,8 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
-#include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "alpha/triangulation.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/structure.hpp"
@@ -104,11 +104,10 @@ auto naming_file(const std::string& file, F&& build) {
 std::unique_ptr<alpha::Triangulation> triangulate(PointSet input, const std::string& file, unsigned threads = 1);
 
 // FILE read, triangulated and turned into its alpha complex, with timings
-// logged. The complex refers to the triangulation: keep both together.
+// logged.
 struct AlphaInput {
   std::size_t points = 0;  // points read
-  std::unique_ptr<alpha::Triangulation> triangulation;
-  std::unique_ptr<alpha::AlphaComplex> complex;
+  alpha::PointSetComplex shape;
 };
 AlphaInput load_alpha_complex(const InputOptions& opt);
 

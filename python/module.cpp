@@ -23,7 +23,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
-#include "alpha/triangulation.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "alphapocket/version.hpp"
 #include "molecule/analysis.hpp"
 #include "molecule/output_selection.hpp"
@@ -89,6 +89,16 @@ py::dict analysis_defaults() {
   d["ranking"] = a.ranking == molecule::SiteRanking::probability ? "probability" : "geometric";
   d["max_input_mb"] = a.structure.max_input_mib;
   d["threads"] = a.cavities.threads;
+  return d;
+}
+
+// surface()'s own defaults, read from molecule::SurfaceOptions (its atom
+// selection is analyze()'s).
+py::dict surface_defaults() {
+  const molecule::SurfaceOptions o;
+  py::dict d;
+  d["probe"] = o.probe;
+  d["excluded"] = o.excluded;
   return d;
 }
 
@@ -185,8 +195,7 @@ py::dict surface_dict(const molecule::Surface& s) {
   return d;
 }
 
-// The triangulation and its complex, owned together (the complex refers to
-// the triangulation). threads > 1 builds both on threads (2^15 points or
+// The triangulation and its complex (alpha::PointSetComplex). threads > 1 builds both on threads (2^15 points or
 // more): the triangulation's cells are numbered otherwise, so shape_mesh
 // lists the same faces in another order; everything else is the same.
 class PyAlphaComplex {
@@ -196,19 +205,18 @@ public:
     std::vector<double> w = weights ? values_of(*weights, p.size(), "weights") : std::vector<double>();
     if (threads < 1) throw py::value_error("threads must be at least 1");
     py::gil_scoped_release release;
-    t_ = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w), threads);
-    ac_ = std::make_unique<alpha::AlphaComplex>(*t_, threads);
+    shape_ = std::make_unique<alpha::PointSetComplex>(std::move(p), std::move(w), threads);
   }
 
   // Every loop over the complex runs without the GIL (a spectrum of 10^5
   // values takes a second); only the copy into numpy holds it.
   py::array_t<double> spectrum() const {
-    std::vector<double> v(ac_->spectrum_size());
+    std::vector<double> v(complex().spectrum_size());
     {
       py::gil_scoped_release release;
       std::vector<alpha::Index> ranks(v.size());
       std::iota(ranks.begin(), ranks.end(), alpha::Index(0));
-      ac_->spectrum_values(ranks, v);
+      complex().spectrum_values(ranks, v);
     }
     return array_of(v);
   }
@@ -219,7 +227,7 @@ public:
     alpha::ClassCounts c;
     {
       py::gil_scoped_release release;
-      c = ac_->counts(ac_->level(alpha_sq));
+      c = complex().counts(complex().level(alpha_sq));
     }
     py::array_t<std::int64_t> out({4, 4});
     auto m = out.mutable_unchecked<2>();
@@ -229,9 +237,9 @@ public:
   }
 
   std::array<std::size_t, 3> betti(double alpha_sq) const {
-    const alpha::Index level = ac_->level(alpha_sq);
+    const alpha::Index level = complex().level(alpha_sq);
     py::gil_scoped_release release;
-    return ac_->betti(level);
+    return complex().betti(level);
   }
 
   // Rows (dim, birth alpha_sq, death alpha_sq), death inf for classes that
@@ -240,14 +248,14 @@ public:
     std::vector<double> rows;
     {
       py::gil_scoped_release release;
-      const std::vector<alpha::PersistencePair>& pairs = ac_->persistence();
+      const std::vector<alpha::PersistencePair>& pairs = complex().persistence();
       std::vector<alpha::Index> ranks;
       for (const alpha::PersistencePair& p : pairs) {
         ranks.push_back(p.birth);
         if (p.death != alpha::kNever) ranks.push_back(p.death);
       }
       std::vector<double> values(ranks.size());
-      ac_->spectrum_values(ranks, values);
+      complex().spectrum_values(ranks, values);
       rows.reserve(3 * pairs.size());
       std::size_t next = 0;
       for (const alpha::PersistencePair& p : pairs) {
@@ -266,9 +274,9 @@ public:
     alpha::ShapeBoundary b;
     {
       py::gil_scoped_release release;
-      b = ac_->boundary(ac_->level(alpha_sq));
+      b = complex().boundary(complex().level(alpha_sq));
     }
-    const auto points = t_->points();
+    const auto points = shape_->triangulation().points();
     py::array_t<double> v({py::ssize_t(points.size()), py::ssize_t(3)});
     auto mv = v.mutable_unchecked<2>();
     for (std::size_t i = 0; i < points.size(); ++i) mv(i, 0) = points[i].x, mv(i, 1) = points[i].y, mv(i, 2) = points[i].z;
@@ -279,11 +287,12 @@ public:
     return py::make_tuple(v, f);
   }
 
-  std::size_t num_points() const { return t_->num_points(); }
+  std::size_t num_points() const { return shape_->triangulation().num_points(); }
 
 private:
-  std::unique_ptr<alpha::Triangulation> t_;
-  std::unique_ptr<alpha::AlphaComplex> ac_;
+  const alpha::AlphaComplex& complex() const { return shape_->complex(); }
+
+  std::unique_ptr<const alpha::PointSetComplex> shape_;  // built without the GIL
 };
 
 }  // namespace
@@ -368,6 +377,7 @@ PYBIND11_MODULE(_core, m) {
 
   alphapocket_python::add_track(m);
   m.def("analysis_defaults", &analysis_defaults);
+  m.def("surface_defaults", &surface_defaults);
   m.def("analyse_path", [](const std::string& path, const py::dict& options) {
     return std::const_pointer_cast<molecule::Analysis>(analyse_path(path, options));
   });

@@ -3,8 +3,10 @@
 // refers to kept alive.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "alpha/point_set_complex.hpp"
 #include "alpha/union_of_balls.hpp"
 
 namespace testing {
@@ -15,9 +17,8 @@ struct BallSet {
 };
 
 struct BallUnion {
-  std::unique_ptr<alpha::Triangulation> t;
-  std::unique_ptr<alpha::AlphaComplex> ac;
-  std::unique_ptr<alpha::UnionOfBalls> u;
+  std::optional<alpha::PointSetComplex> shape;
+  std::unique_ptr<alpha::UnionOfBalls> u;  // refers to shape's complex
   // pad: add 4 far points of radius 0 (alpha::add_far_points): for inputs
   // of fewer than 4 balls, or to keep every ball inside the convex hull.
   explicit BallUnion(const BallSet& s, bool pad = false) {
@@ -31,6 +32,8 @@ struct BallUnion {
     b.build(std::move(p), std::move(w), false);
     return b;
   }
+  const alpha::Triangulation& t() const { return shape->triangulation(); }
+  const alpha::AlphaComplex& ac() const { return shape->complex(); }
   double ball_area(std::size_t i) const { return u->ball_areas()[i]; }
   double ball_volume(std::size_t i) const { return u->ball_volumes()[i]; }
 
@@ -38,9 +41,8 @@ private:
   BallUnion() = default;
   void build(std::vector<alpha::Vec3> p, std::vector<double> w, bool pad) {
     if (pad) alpha::add_far_points(p, w);
-    t = std::make_unique<alpha::Triangulation>(std::move(p), std::move(w));
-    ac = std::make_unique<alpha::AlphaComplex>(*t);
-    u = std::make_unique<alpha::UnionOfBalls>(*ac);
+    shape.emplace(std::move(p), std::move(w));
+    u = std::make_unique<alpha::UnionOfBalls>(shape->complex());
   }
 };
 

@@ -20,6 +20,7 @@
 #include "alpha/discrete_flow.hpp"
 #include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "alpha/sizes.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "molecule/atom_balls.hpp"
@@ -41,11 +42,12 @@ struct Balls {
   std::vector<Vec3> points;
   std::vector<double> radii;
   double probe;
-  alpha::Triangulation triangulation;
-  alpha::AlphaComplex complex;
+  alpha::PointSetComplex shape;
 
   Balls(std::vector<Vec3> p, std::vector<double> r, double pr)
-      : points(p), radii(r), probe(pr), triangulation(std::move(p), inflated(r, pr)), complex(triangulation) {}
+      : points(p), radii(r), probe(pr), shape(std::move(p), inflated(r, pr)) {}
+  const alpha::Triangulation& triangulation() const { return shape.triangulation(); }
+  const alpha::AlphaComplex& complex() const { return shape.complex(); }
 
   static std::vector<double> inflated(const std::vector<double>& r, double probe) {
     std::vector<double> w;
@@ -61,7 +63,7 @@ struct Balls {
     options.min_volume = 0;
     options.split_persistence = split_persistence;
     options.split_volume = split_volume;
-    return molecule::find_cavities(complex, radii, options);
+    return molecule::find_cavities(complex(), radii, options);
   }
   // Whether x lies in no probe-inflated ball.
   bool free(const Vec3& x) const {
@@ -128,8 +130,8 @@ double triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 
 // Properties every result must have, whatever the input.
 void check_invariants(const Balls& b, const Cavities& cav) {
-  const alpha::AlphaComplex& ac = b.complex;
-  const alpha::Triangulation& t = b.triangulation;
+  const alpha::AlphaComplex& ac = b.complex();
+  const alpha::Triangulation& t = b.triangulation();
   const alpha::Simplices& s = ac.simplices();
   const Index level = ac.level(0.0);
   CHECK(cav.voids.size() == ac.betti(level)[2]);
@@ -270,7 +272,7 @@ void check_invariants(const Balls& b, const Cavities& cav) {
     // The killing triangle is critical (not attached), and the bottleneck's
     // probe centre, its orthocentre, has power death_alpha_sq to each of
     // the three balls (grown, they meet there).
-    CHECK(!b.complex.triangle_interval(tn.bottleneck_triangle).attached);
+    CHECK(!b.complex().triangle_interval(tn.bottleneck_triangle).attached);
     for (Index a : tri) {
       const Vec3 d = tn.bottleneck_center - b.points[a];
       const double w = molecule::ball_weight(b.radii[a], b.probe);
@@ -463,7 +465,7 @@ TEST_CASE("Cavities: degenerate and small inputs", "[cavities]") {
   CHECK(open.voids.empty());
   std::size_t cells = 0;
   for (const Cavity& p : open.pockets) cells += p.cells.size();
-  CHECK(cells == sparse.triangulation.num_finite_cells());
+  CHECK(cells == sparse.triangulation().num_finite_cells());
   // Balls of radius 0.6 with a zero probe: faces open, centres free; every
   // grid level in between keeps the invariants.
   for (double r : {0.45, 0.55, 0.65, 0.75, 0.85, 0.95}) {
@@ -482,14 +484,14 @@ TEST_CASE("Cavities: inconsistent input is refused", "[cavities]") {
   const Balls b(pts, std::vector<double>(pts.size(), 0.5), 0.25);
   molecule::CavityOptions options;
   options.probe = 0.25;
-  CHECK_THROWS_AS(molecule::find_cavities(b.complex, std::vector<double>(3, 0.5), options), alpha::Error);
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex(), std::vector<double>(3, 0.5), options), alpha::Error);
   options.probe = 1.4;  // not the probe the complex was built with
-  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex(), b.radii, options), alpha::Error);
   options.probe = -1;
-  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex(), b.radii, options), alpha::Error);
   options.probe = 0.25;
   options.split_volume = std::nan("");
-  CHECK_THROWS_AS(molecule::find_cavities(b.complex, b.radii, options), alpha::Error);
+  CHECK_THROWS_AS(molecule::find_cavities(b.complex(), b.radii, options), alpha::Error);
 }
 
 TEST_CASE("Cavities: an enclosed ligand site is a void and a site (3stdA)", "[cavities]") {
@@ -548,14 +550,14 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
   };
   CHECK(by_persistence.pockets.size() < cav.pockets.size());
   CHECK(largest(by_persistence) > largest(cav));
-  const Index level = b.complex.level(0.0);
-  const alpha::DiscreteFlow flow(b.complex, level);
+  const Index level = b.complex().level(0.0);
+  const alpha::DiscreteFlow flow(b.complex(), level);
   std::set<Index> with_mouth;
-  const alpha::Triangulation& t = b.triangulation;
+  const alpha::Triangulation& t = b.triangulation();
   for (Index c = 0; c < t.num_cells(); ++c)
     for (int k = 0; k < 4; ++k)
       if (flow.region(c) != alpha::kNone && flow.outside(t.cell(c).n[k]) &&
-          b.complex.triangle_interval(b.complex.simplices().cell_triangle(c, k)).entry >= level)
+          b.complex().triangle_interval(b.complex().simplices().cell_triangle(c, k)).entry >= level)
         with_mouth.insert(flow.region(c));
   CHECK(castp.pockets.size() == with_mouth.size());
   // Depth by brute force: a whole region's outside mouths are its pocket's,
@@ -581,7 +583,7 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
       double nearest = std::numeric_limits<double>::infinity();
       for (const molecule::Mouth& m : p.mouths)
         for (Index f : m.triangles) {
-          const auto& fv = b.complex.simplices().triangle(f);
+          const auto& fv = b.complex().simplices().triangle(f);
           nearest = std::min(nearest, triangle_distance(g, t.point(fv[0]), t.point(fv[1]), t.point(fv[2])));
         }
       depth = std::max(depth, nearest);
@@ -598,7 +600,7 @@ TEST_CASE("Cavities: a real protein (1a26A)", "[cavities]") {
       CHECK(c.sinks == sinks);
       CHECK(!c.sinks.empty());
     }
-  const alpha::UnionOfBalls sa_model(b.complex);
+  const alpha::UnionOfBalls sa_model(b.complex());
   CHECK(cav.sa_area == sa_model.area());
   CHECK(cav.sa_volume == sa_model.volume());
   auto all_cells = [](const std::vector<Cavity>& list) {

@@ -35,8 +35,8 @@ struct Digest {
 Digest digest(const molecule::Structure& s, const molecule::CavityOptions& options = {}) {
   const molecule::PocketSearch r = molecule::search_pockets(s, options);
   Digest d;
-  d.values = {r.cavities.sa_area, r.cavities.sa_volume, double(r.complex->spectrum_size()),
-              double(r.complex->persistence().size())};
+  d.values = {r.cavities.sa_area, r.cavities.sa_volume, double(r.shape->complex().spectrum_size()),
+              double(r.shape->complex().persistence().size())};
   for (const auto* list : {&r.cavities.pockets, &r.cavities.voids})
     for (const molecule::Cavity& c : *list) {
       d.values.insert(d.values.end(), {c.sa_volume, c.sa_area, c.ms_volume, c.ms_area, c.depth, c.score, c.center.x,

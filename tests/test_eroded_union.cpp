@@ -119,7 +119,7 @@ TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
     const ErodedUnion e(*u.u, r);
     const LayerShare whole = e.layer();
     double volume = 0, area = 0;
-    for (Index c = 0; c < u.t->num_cells(); ++c) {
+    for (Index c = 0; c < u.t().num_cells(); ++c) {
       const LayerShare share = e.cell_share(c);
       volume += share.volume;
       area += share.area;
@@ -128,7 +128,7 @@ TEST_CASE("eroded union: the cells' shares sum to the totals", "[eroded]") {
     CHECK(area == Approx(whole.area).epsilon(1e-12));
     // cells_share (scratch space kept from cell to cell) adds the same
     // shares in the same order: bit for bit the same sum.
-    std::vector<Index> all(u.t->num_cells());
+    std::vector<Index> all(u.t().num_cells());
     std::iota(all.begin(), all.end(), Index(0));
     const LayerShare together = e.cells_share(all);
     CHECK(together.volume == volume);
@@ -140,7 +140,7 @@ TEST_CASE("eroded union: a patch's area in a cell's cone, against its sphere's a
   const Balls balls = cluster(40, 21, 9.0, 1.6, 3.4);
   const Union u(balls);
   const ErodedUnion e(*u.u, 1.4);
-  const Triangulation& t = *u.t;
+  const Triangulation& t = u.t();
   // The cones about a centre fill space: the parts add up to the sphere's
   // area on the boundary (UnionOfBalls' inclusion-exclusion over K).
   std::vector<double> sum(t.num_points(), 0.0);
@@ -207,8 +207,8 @@ TEST_CASE("eroded union: share_cell is the cell whose cone holds the nearest poi
     const Balls balls = cluster(40, 41, 8.0, 1.6, 3.4);
     const testing::BallUnion u(balls, pad);
     const ErodedUnion e(*u.u, 1.4);
-    const Triangulation& t = *u.t;
-    const Simplices& s = u.ac->simplices();
+    const Triangulation& t = u.t();
+    const Simplices& s = u.ac().simplices();
     const auto holders = [&](const ErodedUnion::Nearest& n) {
       std::vector<Index> feature{n.which};
       if (n.on == ErodedUnion::Nearest::On::circle) feature = {s.edge(n.which)[0], s.edge(n.which)[1]};

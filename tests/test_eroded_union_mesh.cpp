@@ -118,7 +118,7 @@ TEST_CASE("cast mesh: real proteins' casts are closed and within 1% of ms_volume
     const molecule::Structure st = molecule::read_structure(path);
     const molecule::CavityOptions options;
     const molecule::PocketSearch search = molecule::search_pockets(st, options);
-    const alpha::UnionOfBalls balls(*search.complex);
+    const alpha::UnionOfBalls balls(search.shape->complex());
     const alpha::ErodedUnion eu(balls, options.probe);
     const auto check = [&](const molecule::Cavity& c, bool is_void, std::size_t rank) {
       const alpha::SurfaceMesh m = molecule::cast_mesh(eu, c, molecule::kDefaultMeshResolution);

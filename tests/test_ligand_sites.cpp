@@ -78,7 +78,7 @@ void check_against_brute_force(const std::string& file, const molecule::Structur
       for (const molecule::Atom& a : group.atoms) {
         double d = std::numeric_limits<double>::infinity();
         for (const alpha::Index c : cav.cavity(cav.sites[k]).cells)
-          d = std::min(d, cell_distance(a.position, *search.triangulation, c));
+          d = std::min(d, cell_distance(a.position, search.shape->triangulation(), c));
         distance = std::min(distance, d);
         inside += d == 0;
       }

@@ -6,10 +6,11 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "alpha/alpha_complex.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/radius_file.hpp"
@@ -29,17 +30,14 @@ struct Atoms {
   std::vector<Vec3> points;
   std::vector<double> radii;
   double probe = 1.4;
-  std::unique_ptr<alpha::Triangulation> t;
-  std::unique_ptr<alpha::AlphaComplex> ac;
+  std::optional<alpha::PointSetComplex> shape;
   void add(const std::vector<Vec3>& ps, double r) {
     for (const Vec3& p : ps) points.push_back(p), radii.push_back(r);
   }
   const alpha::AlphaComplex& complex() {
     std::vector<double> w;
     for (const double r : radii) w.push_back(molecule::ball_weight(r, probe));
-    t = std::make_unique<alpha::Triangulation>(points, w);
-    ac = std::make_unique<alpha::AlphaComplex>(*t);
-    return *ac;
+    return shape.emplace(points, std::move(w)).complex();
   }
   // Distance to the nearest sphere, by a scan of all atoms.
   double radius_at(const Vec3& x) const {
@@ -99,7 +97,7 @@ TEST_CASE("tunnel paths: a straight channel of rings is one pore of bottleneck R
   for (const auto& q : p.profile) CHECK(std::hypot(q.x.x, q.x.y) < 1e-6);
   // A probe wider than the channel finds no pore.
   o.probe = 1.41;
-  CHECK(molecule::find_tunnel_paths(*a.ac, a.radii, {}, o).empty());
+  CHECK(molecule::find_tunnel_paths(a.shape->complex(), a.radii, {}, o).empty());
 }
 
 TEST_CASE("tunnel paths: from inside a cage with one window, the tunnel leaves through it", "[tunnels]") {
@@ -185,7 +183,7 @@ TEST_CASE("tunnel paths: gramicidin A has one pore, as HOLE finds it (1.198 A)",
   for (const auto& atom : s.atoms) radii.push_back(atom.radius);
   TunnelOptions o;
   o.pores = true;
-  const std::vector<TunnelPath> paths = molecule::find_tunnel_paths(*search.complex, radii, {}, o);
+  const std::vector<TunnelPath> paths = molecule::find_tunnel_paths(search.shape->complex(), radii, {}, o);
   REQUIRE(paths.size() == 1);
   const TunnelPath& p = paths.front();
   CHECK(std::abs(p.bottleneck_radius - 1.198) < 0.15);

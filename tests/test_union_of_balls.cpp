@@ -327,8 +327,8 @@ TEST_CASE("union of balls: hidden and duplicate points add nothing", "[union][de
   more.centers.push_back({1, -1, -1});
   more.radii.push_back(1.0);
   const Union un(more);
-  REQUIRE(un.t->status(4) == PointStatus::hidden);
-  REQUIRE(un.t->status(5) == PointStatus::duplicate);
+  REQUIRE(un.t().status(4) == PointStatus::hidden);
+  REQUIRE(un.t().status(5) == PointStatus::duplicate);
   CHECK(un.u->volume() == Approx(plain.u->volume()).epsilon(1e-14));
   CHECK(un.u->area() == Approx(plain.u->area()).epsilon(1e-14));
   for (std::size_t i : {4, 5}) {
@@ -398,7 +398,7 @@ TEST_CASE("union of balls: far points make balls on a line or a plane a union, a
   for (std::size_t i = 0; i < b.centers.size(); ++i) {
     CHECK(padded.ball_area(i) == Approx(plain.ball_area(i)).margin(1e-12));
     for (std::size_t k = b.centers.size(); k < b.centers.size() + 4; ++k)
-      CHECK(norm(padded.t->point(k) - b.centers[i]) > 2 * b.radii[i]);
+      CHECK(norm(padded.t().point(k) - b.centers[i]) > 2 * b.radii[i]);
   }
   std::vector<Vec3> p{{0, 0, 0}};
   std::vector<double> w;
@@ -482,7 +482,7 @@ TEST_CASE("union of balls: cells share the union exactly when it lies inside the
     for (double y : {-3.0, 7.0})
       for (double z : {-3.0, 7.0}) s.centers.push_back({x, y, z}), s.radii.push_back(0);
   const Union un(s);
-  const Triangulation& t = *un.t;
+  const Triangulation& t = un.t();
   double volume = 0, area = 0;
   for (Index c = 0; c < t.num_cells(); ++c) {
     const CellCover cc = un.u->cell_cover(c);
@@ -533,8 +533,8 @@ TEST_CASE("union of balls: the cells of a void hold exactly its covered part", "
   // them (Monte Carlo), and no cell's part exceeds its volume.
   const BallSet s = random_balls(300, 1, 8.0, 0.6, 1.2);
   const Union un(s);
-  const Triangulation& t = *un.t;
-  const Simplices& sx = un.ac->simplices();
+  const Triangulation& t = un.t();
+  const Simplices& sx = un.ac().simplices();
   std::vector<int> component(t.num_cells(), -1);
   std::vector<std::vector<Index>> voids;
   for (Index c = 0; c < t.num_cells(); ++c) {
@@ -593,15 +593,15 @@ TEST_CASE("union of balls: a cell's share is its covered part when the pieces st
     return kNone;
   };
   const Union full({p, {0.62, 0.62, 0.62, 0.62}});
-  const Index c = finite_cell(*full.t);
+  const Index c = finite_cell(full.t());
   CHECK(full.u->in_dual_complex_cell(c));
   CHECK(full.u->cell_cover(c).volume == Approx(vol).epsilon(1e-13));
 
   const double r = 0.6;
   const Union un({p, {r, r, r, r}});
-  const Index cell = finite_cell(*un.t);
+  const Index cell = finite_cell(un.t());
   CHECK(!un.u->in_dual_complex_cell(cell));
-  for (Index f = 0; f < un.ac->simplices().num_triangles(); ++f) CHECK(un.u->in_dual_complex_triangle(f));
+  for (Index f = 0; f < un.ac().simplices().num_triangles(); ++f) CHECK(un.u->in_dual_complex_triangle(f));
   const CellCover cc = un.u->cell_cover(cell);
   // Monte Carlo over the tetrahedron (uniform barycentric coordinates).
   std::mt19937_64 rng(5);
@@ -651,7 +651,7 @@ TEST_CASE("union of balls: a cell's part is its covered part, balls crossing its
   // into the next cells (where a fractional split of the union is off).
   const BallSet s = random_balls(40, 21, 6.0, 1.2, 2.4);
   const Union un(s, true);
-  const Triangulation& t = *un.t;
+  const Triangulation& t = un.t();
   int checked = 0;
   for (Index c = 0; c < t.num_cells() && checked < 12; c += 7) {
     if (t.is_infinite(c)) continue;
@@ -683,7 +683,7 @@ TEST_CASE("union of balls: cells' parts sum to the union on degenerate sets", "[
   sets.push_back(sphere);
   for (const BallSet& s : sets) {
     const Union un(s, true);
-    const Triangulation& t = *un.t;
+    const Triangulation& t = un.t();
     Sum volume, area;
     std::vector<Index> some;
     for (Index c = 0; c < t.num_cells(); ++c) {

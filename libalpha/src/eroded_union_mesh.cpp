@@ -52,7 +52,8 @@ static_assert(kContourBlock % kCubeGroup == 0);
 // The lattice of `spacing` (aligned to its multiples) over the box [lo, hi]
 // with two nodes to spare on every side.
 Lattice lattice_over(const Vec3& lo, const Vec3& hi, double spacing) {
-  if (!(spacing > 0) || !std::isfinite(spacing)) fail("mesh: the lattice spacing must be a number > 0");
+  if (!(spacing > 0) || !std::isfinite(spacing))
+    fail("mesh: the lattice spacing must be a number > 0", ErrorKind::Misuse);
   Lattice l;
   l.spacing = spacing;
   const double low[3] = {lo.x, lo.y, lo.z}, high[3] = {hi.x, hi.y, hi.z};
@@ -62,7 +63,8 @@ Lattice lattice_over(const Vec3& lo, const Vec3& hi, double spacing) {
     origin[a] = (std::floor(low[a] / spacing) - 2) * spacing;
     const double n = std::ceil((high[a] - origin[a]) / spacing) + 3;
     nodes *= n;
-    if (!(nodes < double(std::int64_t(1) << 31))) fail("mesh: the lattice would have more than 2^31 nodes");
+    if (!(nodes < double(std::int64_t(1) << 31)))
+      fail("mesh: the lattice would have more than 2^31 nodes", ErrorKind::LimitExceeded);
     l.size[a] = std::size_t(n);
   }
   l.origin = {origin[0], origin[1], origin[2]};
@@ -305,7 +307,8 @@ SurfaceMesh cells_mesh(const ErodedUnion& eu, std::span<const Index> cells, doub
   if (cells.empty()) return {};
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (Index c : cells) {
-    if (c >= t.num_cells() || t.is_infinite(c)) fail("mesh: cell " + std::to_string(c) + " is not a finite cell");
+    if (c >= t.num_cells() || t.is_infinite(c))
+      fail("mesh: cell " + std::to_string(c) + " is not a finite cell", ErrorKind::Misuse);
     for (Index v : t.cell(c).v) {
       const Vec3 p = t.point(v);
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};

@@ -93,12 +93,12 @@ SurfaceMesh contour(const Lattice& lattice, const std::vector<std::uint8_t>& ins
                     const std::function<Vec3(std::size_t, std::size_t, std::size_t)>& vertex,
                     const ContourSplit& split) {
   const auto& size = lattice.size;
-  if (inside.size() != lattice.num_nodes()) fail("contour: one flag per lattice node expected");
+  if (inside.size() != lattice.num_nodes()) fail("contour: one flag per lattice node expected", ErrorKind::Misuse);
   for (std::size_t n = 0; n < inside.size(); ++n) {
     if (!inside[n]) continue;
     const std::size_t i = n % size[0], j = n / size[0] % size[1], k = n / (size[0] * size[1]);
     if (i == 0 || j == 0 || k == 0 || i + 1 == size[0] || j + 1 == size[1] || k + 1 == size[2])
-      fail("contour: a node on the lattice's border is inside");
+      fail("contour: a node on the lattice's border is inside", ErrorKind::Misuse);
   }
   static const std::array<Tet, 6> kTets = cube_tetrahedra();
   static const std::array<std::array<int, 4>, 12> kEven = even_permutations();

@@ -300,7 +300,7 @@ struct Scaled {
   }
   template <class T> void size(int first, int k, T& N, T& D) const {
     size_terms(local<T>(first, k), N, D);
-    if (certainly_zero(D)) fail("sizes: degenerate simplex (affinely dependent points)");
+    if (certainly_zero(D)) fail("sizes: degenerate simplex (affinely dependent points)", ErrorKind::Misuse);
   }
 };
 
@@ -533,7 +533,7 @@ std::optional<SmallFraction> small_fraction(const SizeKernel& kernel, const Simp
   Approx N, D;
   size_terms(l, N, D);
   if (!(N.p < kExactPermanent && D.p < kExactPermanent)) return std::nullopt;
-  if (D.v == 0) fail("sizes: degenerate simplex (affinely dependent points)");
+  if (D.v == 0) fail("sizes: degenerate simplex (affinely dependent points)", ErrorKind::Misuse);
   return SmallFraction{std::int64_t(N.v), std::int64_t(D.v)};
 }
 
@@ -893,7 +893,7 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs,
     if (integers < 0) integers = small_integers(std::span<const Index>(s.v.data(), std::size_t(s.n)));
     if (integers && P.p < kExactPermanent && frame.den.p < kExactPermanent &&
         small_integers(std::span<const Index>(&q, 1))) {
-      if (frame.den.v == 0) fail("attached: degenerate simplex (affinely dependent points)");
+      if (frame.den.v == 0) fail("attached: degenerate simplex (affinely dependent points)", ErrorKind::Misuse);
       ++(P.v != 0 ? stats_.attached.filtered : stats_.attached.perturbed);  // decided in doubles
       if (P.v < 0) return true;
       continue;
@@ -906,7 +906,7 @@ bool SizeKernel::attached_any(const Simplex& simplex, std::span<const Index> qs,
       using T = decltype(tag);
       const Local<T> loc = in.local<T>(0, s.n - 1);
       const PowerFrame<T> f = power_frame(loc);
-      if (certainly_zero(f.den)) fail("attached: degenerate simplex (affinely dependent points)");
+      if (certainly_zero(f.den)) fail("attached: degenerate simplex (affinely dependent points)", ErrorKind::Misuse);
       T vq[3];
       for (int a = 0; a < 3; ++a) vq[a] = in.coord<T>(s.n, a) - in.coord<T>(0, a);
       return power_terms(loc, f, vq, T(loc.w0 - in.weight<T>(s.n)));

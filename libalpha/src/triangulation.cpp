@@ -40,10 +40,12 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
     for (double v : {p.x, p.y, p.z})
       if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
         fail("point " + std::to_string(i) + ": coordinate " + std::to_string(v) +
-             (std::isfinite(v) ? " is out of range (|x| > 1e15)" : " is not a finite number"));
+                 (std::isfinite(v) ? " is out of range (|x| > 1e15)" : " is not a finite number"),
+             ErrorKind::BadInput);
     if (!weights.empty() && (!std::isfinite(weights[i]) || std::fabs(weights[i]) > kMaxWeight))
       fail("point " + std::to_string(i) + ": weight " + std::to_string(weights[i]) +
-           " is not a finite number within 1e30");
+               " is not a finite number within 1e30",
+           ErrorKind::BadInput);
   }
   // Sizes scale as the squared extent: below this, the doubles that report
   // them (spectrum values, alpha_sq) would round to 0 or subnormals.
@@ -54,7 +56,8 @@ void check_input(const std::vector<Vec3>& points, const std::vector<double>& wei
     if (lo != points.end()) extent = std::max(extent, (*hi).*axis - (*lo).*axis);
   }
   if (extent > 0 && extent < kMinExtent)
-    fail("the points span only " + std::to_string(extent) + " (below 1e-100): their sizes would underflow");
+    fail("the points span only " + std::to_string(extent) + " (below 1e-100): their sizes would underflow",
+         ErrorKind::BadInput);
 }
 
 namespace {
@@ -212,7 +215,7 @@ public:
     }
     const std::vector<Index> reps = merge_duplicates();
     if (reps.size() < 4)
-      fail("need at least 4 distinct points, got " + std::to_string(reps.size()));
+      fail("need at least 4 distinct points, got " + std::to_string(reps.size()), ErrorKind::BadInput);
     const std::size_t expected = expected_cells(reps.size());
     const bool parallel = threads > 1 && reps.size() >= kMinParallel;
     // The cell array is written at random places as it fills.
@@ -353,8 +356,10 @@ private:
     std::iota(order.begin(), order.end(), Index(0));
     std::array<Index, 4> v;
     const int dimension = spanning_points(kernel_, o_.points, order, v);
-    if (dimension == 1) fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points");
-    if (dimension == 2) fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points");
+    if (dimension == 1)
+      fail("all points are collinear: a 3D triangulation needs 4 non-coplanar points", ErrorKind::BadInput);
+    if (dimension == 2)
+      fail("all points are coplanar: a 3D triangulation needs 4 non-coplanar points", ErrorKind::BadInput);
     if (kernel_.orient3d(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
     cells_.push_back({v, {1, 2, 3, 4}});
     for (int i = 0; i < 4; ++i) {

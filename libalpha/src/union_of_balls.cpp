@@ -247,7 +247,9 @@ UnionOfBalls::UnionOfBalls(const AlphaComplex& complex) : complex_(&complex), le
   radius_.assign(n, 0.0);
   for (Index i = 0; i < n; ++i) {
     const double w = t.weight(i);
-    if (!(w >= 0)) fail("union of balls: point " + std::to_string(i) + " has negative weight " + std::to_string(w));
+    if (!(w >= 0))
+      fail("union of balls: point " + std::to_string(i) + " has negative weight " + std::to_string(w),
+           ErrorKind::BadInput);
     radius_[i] = std::sqrt(w);
     max_radius_ = std::max(max_radius_, radius_[i]);
   }

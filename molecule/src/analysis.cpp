@@ -67,7 +67,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     for (const TunnelStart& s : starts) a.tunnel_starts.push_back(s.label);
     std::vector<double> radii;
     for (const Atom& atom : a.structure.atoms) radii.push_back(atom.radius);
-    a.paths = find_tunnel_paths(*a.search.complex, radii, starts, options.tunnels);
+    a.paths = find_tunnel_paths(a.search.shape->complex(), radii, starts, options.tunnels);
     a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
   } catch (const AnalysisError&) {

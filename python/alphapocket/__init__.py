@@ -33,6 +33,9 @@ __all__ = ["analyze", "surface", "track", "TrackResult", "AlphaComplex", "Analys
 
 # The defaults of `alphapocket pockets`, read from the C++ option structs.
 _ANALYZE_DEFAULTS = _core.analysis_defaults()
+_SURFACE_DEFAULTS = _core.surface_defaults()
+_SELECTION_KEYS = ("model", "chains", "keep_hydrogens", "keep_waters", "keep_hetero", "keep_cofactors",
+                   "max_input_mb")
 _ARRAY_KEYS = ("atom_names", "residue_names", "elements", "chains", "residue_numbers")
 
 
@@ -218,15 +221,15 @@ class SurfaceResult:
                 f"ms_area={self.ms_area}, ms_volume={self.ms_volume})")
 
 
-def surface(structure=None, probe=1.4, excluded=True, per_atom=True, **selection):
+def surface(structure=None, probe=_SURFACE_DEFAULTS["probe"], excluded=_SURFACE_DEFAULTS["excluded"], per_atom=True,
+            **selection):
     """Solvent-accessible (SA) and solvent-excluded (MS) area and volume, as
     `alphapocket surface --json --per-atom`; excluded=False skips the MS
     surface (--sa-only), per_atom=False its split per atom (about 3.5 times
     the MS time). Selection: model, chains, keep_hydrogens, keep_waters,
     keep_hetero, keep_cofactors; max_input_mb=512 as in analyze()."""
     kind, source, data = _input(structure, selection)
-    sel = dict(model=0, chains=[], keep_hydrogens=False, keep_waters=False, keep_hetero=False, keep_cofactors=False,
-               max_input_mb=512)
+    sel = {key: _ANALYZE_DEFAULTS[key] for key in _SELECTION_KEYS}
     unknown = set(selection) - set(sel)
     if unknown:
         raise MisuseError("surface: unknown option(s) " + ", ".join(sorted(unknown)))

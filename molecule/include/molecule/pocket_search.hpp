@@ -5,11 +5,10 @@
 // (find_cavities, with the solvent-accessible model's area and volume),
 // whose candidate binding sites are then ranked (rank_sites).
 #pragma once
-#include <memory>
+#include <optional>
 #include <string>
 
-#include "alpha/alpha_complex.hpp"
-#include "alpha/triangulation.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "molecule/cavities.hpp"
 #include "molecule/site_ranking.hpp"
 #include "molecule/structure.hpp"
@@ -17,8 +16,9 @@
 namespace molecule {
 
 struct PocketSearch {
-  std::unique_ptr<alpha::Triangulation> triangulation;
-  std::unique_ptr<alpha::AlphaComplex> complex;  // refers to *triangulation
+  // The atoms' weighted points: their triangulation and alpha complex
+  // (empty in a search not run).
+  std::optional<alpha::PointSetComplex> shape;
   Cavities cavities;  // atom indices are indices into Structure::atoms
   // Wall-clock seconds of the stages, for logs and benchmarks.
   double complex_seconds = 0;

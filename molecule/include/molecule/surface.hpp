@@ -15,12 +15,13 @@
 #include <vector>
 
 #include "alpha/geometry.hpp"
+#include "molecule/cavities.hpp"
 #include "molecule/structure.hpp"
 
 namespace molecule {
 
 struct SurfaceOptions {
-  double probe = 1.4;     // A, added to every atom radius (0: van der Waals balls)
+  double probe = CavityOptions{}.probe;  // A, added to every atom radius (0: van der Waals balls)
   bool excluded = true;   // also the MS surface (several times the SA's time)
   bool excluded_per_atom = false;  // and its area and volume per atom (about twice the MS time)
 };

@@ -6,9 +6,9 @@
 #include <string>
 #include <utility>
 
-#include "alpha/alpha_complex.hpp"
 #include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
+#include "alpha/point_set_complex.hpp"
 #include "alpha/triangulation.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "molecule/atom_balls.hpp"
@@ -34,13 +34,12 @@ Surface measured(std::vector<alpha::Vec3> points, std::vector<double> weights, s
   // Any set of balls has a union, but a triangulation needs four points
   // not in one plane: far points make a small or flat molecule one.
   if (alpha::affine_dimension(points) < 3) alpha::add_far_points(points, weights);
-  const alpha::Triangulation t(std::move(points), std::move(weights));
-  const alpha::AlphaComplex complex(t);
+  const alpha::PointSetComplex shape(std::move(points), std::move(weights));
   s.complex_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  const alpha::UnionOfBalls u(complex);
+  const alpha::UnionOfBalls u(shape.complex());
   s.union_seconds = seconds_since(start);
-  s.hidden = t.num_hidden();
+  s.hidden = shape.triangulation().num_hidden();
   s.sa_area = u.area();
   s.sa_volume = u.volume();
   const auto areas = u.ball_areas();

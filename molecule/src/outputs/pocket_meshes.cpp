@@ -61,7 +61,7 @@ alpha::SurfaceMesh cast_mesh(const alpha::ErodedUnion& eu, const Cavity& cavity,
 
 PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {
   const auto start = std::chrono::steady_clock::now();
-  const alpha::UnionOfBalls balls(*search.complex);
+  const alpha::UnionOfBalls balls(search.shape->complex());
   const alpha::ErodedUnion eu(balls, probe);
   const Cavities& cavities = search.cavities;
   const CavityRanks ranks = cavity_ranks(cavities);

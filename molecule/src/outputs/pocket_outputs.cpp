@@ -154,7 +154,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     files.emplace_back("pockets.pml", pymol_script(run, scene));
     files.emplace_back("pockets.cxc", chimerax_script(run, scene));
   }
-  const alpha::AlphaComplex& ac = *run.search->complex;
+  const alpha::AlphaComplex& ac = run.search->shape->complex();
   const Cavities& cavities = run.search->cavities;
   if (selection_.pdb) {
     PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file);

@@ -48,7 +48,7 @@ std::string viewer_object_name(const std::string& file) {
 
 ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& ligand_ids) {
   const Cavities& cavities = run.search->cavities;
-  const alpha::AlphaComplex& ac = *run.search->complex;
+  const alpha::AlphaComplex& ac = run.search->shape->complex();
   const CavityColors colors = cavity_colors(cavities);
   ViewerScene scene;
   scene.object = viewer_object_name(run.file);

@@ -112,7 +112,8 @@ std::vector<LigandSite> ligand_sites(const Structure& structure, const PocketSea
       continue;
     }
     if (spaces.empty())
-      for (const Site& s : cavities.sites) spaces.push_back(site_space(*search.triangulation, cavities.cavity(s)));
+      for (const Site& s : cavities.sites)
+        spaces.push_back(site_space(search.shape->triangulation(), cavities.cavity(s)));
     LigandSite best;
     best.group = group;
     best.distance = std::numeric_limits<double>::infinity();

@@ -23,12 +23,11 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
   std::vector<double> radii;
   radii.reserve(structure.atoms.size());
   for (const Atom& a : structure.atoms) radii.push_back(a.radius);
-  out.triangulation = std::make_unique<alpha::Triangulation>(std::move(balls.points), std::move(balls.weights));
-  out.complex = std::make_unique<alpha::AlphaComplex>(*out.triangulation);
+  out.shape.emplace(std::move(balls.points), std::move(balls.weights));
   out.complex_seconds = seconds_since(start);
 
   const auto cavities_start = std::chrono::steady_clock::now();
-  out.cavities = find_cavities(*out.complex, radii, options);
+  out.cavities = find_cavities(out.shape->complex(), radii, options);
   out.cavities_seconds = seconds_since(cavities_start);
   const auto ranking_start = std::chrono::steady_clock::now();
   rank_sites(structure, out.cavities, ranking);

@@ -35,8 +35,7 @@ namespace {
 // The problem may quote the file's own bytes (a record, a token): any
 // control or non-ASCII byte among them becomes '?', so the message stays
 // one line and prints nothing but text.
-[[noreturn]] void fail(const std::string& name, const std::string& what,
-                       alpha::ErrorKind kind = alpha::ErrorKind::BadInput) {
+[[noreturn]] void fail(const std::string& name, const std::string& what, alpha::ErrorKind kind) {
   throw StructureError(name + ": " + printable_ascii(what), kind);
 }
 
@@ -86,8 +85,9 @@ bool has_atom_records(std::string_view text) {
 Format detect_format(std::string_view text, const std::string& name) {
   if (starts_with_data_block(text)) return Format::Mmcif;
   if (has_atom_records(text)) return Format::Pdb;
-  if (text.substr(0, 4096).find('\0') != std::string_view::npos) fail(name, "binary data, not a PDB or mmCIF file");
-  fail(name, "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)");
+  if (text.substr(0, 4096).find('\0') != std::string_view::npos)
+    fail(name, "binary data, not a PDB or mmCIF file", alpha::ErrorKind::BadInput);
+  fail(name, "not a PDB or mmCIF file (no data_ block, no ATOM or HETATM records)", alpha::ErrorKind::BadInput);
 }
 
 // A coordinate field of a PDB record: blanks, an optional sign, digits with
@@ -162,7 +162,7 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
   for_each_line(text, [&](std::size_t line_number, std::string_view line) {
     if (is_end_record(line)) return false;
     const auto error = [&](const std::string& what) {
-      fail(name, "line " + std::to_string(line_number) + ": " + what);
+      fail(name, "line " + std::to_string(line_number) + ": " + what, alpha::ErrorKind::BadInput);
     };
     // gemmi reads the distance of a SSBOND or LINK record longer than 73
     // characters from columns 74-78, past the record's end when it is
@@ -349,8 +349,10 @@ void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std:
   };
   const auto bad = [&](std::size_t row, std::size_t col, const std::string& what) {
     const std::string& tag = tags[col];
-    fail(name, "line " + std::to_string(line_of(row, col)) + ": _atom_site." + tag.substr(tag[0] == '?') + " is '" +
-                   table[int(row)][col] + "', " + what);
+    fail(name,
+         "line " + std::to_string(line_of(row, col)) + ": _atom_site." + tag.substr(tag[0] == '?') + " is '" +
+             table[int(row)][col] + "', " + what,
+         alpha::ErrorKind::BadInput);
   };
   for (std::size_t row = 0; row < table.length(); ++row) {
     const gemmi::cif::Table::Row values = table[int(row)];
@@ -548,10 +550,11 @@ gemmi::Structure parse_with_gemmi(std::string_view text, Format format, const st
     for (gemmi::Model& m : st.models)
       for (gemmi::Chain& c : m.chains) type_residues(c);
   } catch (const std::exception& e) {
-    throw StructureError(one_line(e.what(), name));
+    throw StructureError(one_line(e.what(), name), alpha::ErrorKind::BadInput);
   }
-  if (!missing.empty()) fail(name, "mmCIF _atom_site lacks column(s) " + join(missing, missing.size()));
-  if (!has_atoms(st)) fail(name, "no atoms in the file");
+  if (!missing.empty())
+    fail(name, "mmCIF _atom_site lacks column(s) " + join(missing, missing.size()), alpha::ErrorKind::BadInput);
+  if (!has_atoms(st)) fail(name, "no atoms in the file", alpha::ErrorKind::BadInput);
   return st;
 }
 
@@ -782,7 +785,7 @@ int model_number(const gemmi::Model& m) {
 
 // Model 0 is the first model with atoms (a PDB file may have empty ones).
 const gemmi::Model& select_model(const gemmi::Structure& st, int model, const std::string& name) {
-  if (model < 0) fail(name, "invalid model number " + std::to_string(model));
+  if (model < 0) fail(name, "invalid model number " + std::to_string(model), alpha::ErrorKind::Misuse);
   if (model == 0)
     return *std::find_if(st.models.begin(), st.models.end(), [](const gemmi::Model& m) { return has_atoms(m); });
   std::vector<std::string> names, with_atoms;
@@ -792,8 +795,9 @@ const gemmi::Model& select_model(const gemmi::Structure& st, int model, const st
     if (has_atoms(m)) with_atoms.push_back(m.name);
   }
   if (std::find(names.begin(), names.end(), std::to_string(model)) != names.end())
-    fail(name, "model " + std::to_string(model) + " has no atoms (models with atoms: " + join(with_atoms, 10) + ")");
-  fail(name, "no model " + std::to_string(model) + " (models: " + join(names, 10) + ")");
+    fail(name, "model " + std::to_string(model) + " has no atoms (models with atoms: " + join(with_atoms, 10) + ")",
+         alpha::ErrorKind::BadInput);
+  fail(name, "no model " + std::to_string(model) + " (models: " + join(names, 10) + ")", alpha::ErrorKind::BadInput);
 }
 
 void check_chains(const gemmi::Model& model, const std::vector<std::string>& chains, const std::string& name) {
@@ -802,7 +806,8 @@ void check_chains(const gemmi::Model& model, const std::vector<std::string>& cha
       std::vector<std::string> names;
       for (const gemmi::Chain& c : model.chains)
         if (std::find(names.begin(), names.end(), c.name) == names.end()) names.push_back(c.name);
-      fail(name, "no chain '" + wanted + "' in model " + model.name + " (chains: " + join(names, 30) + ")");
+      fail(name, "no chain '" + wanted + "' in model " + model.name + " (chains: " + join(names, 30) + ")",
+           alpha::ErrorKind::BadInput);
     }
 }
 
@@ -916,11 +921,15 @@ Structure select(const gemmi::Structure& st, const StructureOptions& options, co
   report.hetero_groups = out.hetero_groups.size();
   radius.add_warnings(report.warnings, unknown);
   if (out.atoms.empty())
-    fail(name, "no atoms left after the selection (model " + model.name + " has " +
-                   std::to_string(report.atoms_in_model) + " atoms; dropped: " + dropped_list(report) + ")");
+    fail(name,
+         "no atoms left after the selection (model " + model.name + " has " + std::to_string(report.atoms_in_model) +
+             " atoms; dropped: " + dropped_list(report) + ")",
+         alpha::ErrorKind::BadInput);
   if (out.atoms.size() < options.min_atoms)
-    fail(name, "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
-                   " after the selection, at least " + std::to_string(options.min_atoms) + " are needed");
+    fail(name,
+         "only " + std::to_string(out.atoms.size()) + " atom" + (out.atoms.size() == 1 ? "" : "s") +
+             " after the selection, at least " + std::to_string(options.min_atoms) + " are needed",
+         alpha::ErrorKind::BadInput);
   return out;
 }
 
@@ -937,7 +946,7 @@ namespace {
 // The file parsed by gemmi, and how each model is selected from it.
 template <class Select>
 auto parsed(std::string_view data, const std::string& name, const StructureOptions& options, Select&& select_models) {
-  if (data.empty()) fail(name, "file is empty");
+  if (data.empty()) fail(name, "file is empty", alpha::ErrorKind::BadInput);
   std::string unzipped;
   const bool gzipped = is_gzip(data);
   if (gzipped) {
@@ -948,12 +957,14 @@ auto parsed(std::string_view data, const std::string& name, const StructureOptio
     }
     data = unzipped;
   } else if (ends_with_ci(name, ".gz")) {
-    fail(name, "not gzip data (no gzip header)");
+    fail(name, "not gzip data (no gzip header)", alpha::ErrorKind::BadInput);
   }
   if (data.size() > options.max_input_mib << 20) too_large(name, data.size(), options.max_input_mib);
-  if (is_blank(data)) fail(name, gzipped ? "file is empty (after decompression)" : "file is empty");
+  if (is_blank(data))
+    fail(name, gzipped ? "file is empty (after decompression)" : "file is empty", alpha::ErrorKind::BadInput);
   if (const std::optional<std::size_t> line = cif_without_data_block(data))
-    fail(name, "line " + std::to_string(*line) + ": mmCIF without a data_ block (its first line must be data_NAME)");
+    fail(name, "line " + std::to_string(*line) + ": mmCIF without a data_ block (its first line must be data_NAME)",
+         alpha::ErrorKind::BadInput);
   const Format format = detect_format(data, name);
   const std::optional<OldColumns> old = format == Format::Pdb ? old_format_columns(data) : std::nullopt;
   bool local_plddt = false;

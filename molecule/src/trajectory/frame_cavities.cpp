@@ -154,9 +154,9 @@ SpaceGrid grid_around(const std::vector<Atom>& atoms, double spacing, double mar
 FrameCavities frame_cavities(const Analysis& analysis, const SpaceGrid& grid) {
   FrameCavities out;
   const std::vector<Atom>& atoms = analysis.structure.atoms;
-  const alpha::Triangulation& t = *analysis.search.triangulation;
+  const alpha::Triangulation& t = analysis.search.shape->triangulation();
   const AtomBins bins(atoms, analysis.options.cavities.probe);
-  const alpha::SizeKernel sizes = analysis.search.complex->size_kernel();
+  const alpha::SizeKernel sizes = analysis.search.shape->complex().size_kernel();
   const long half_cube = std::max(0L, long(std::floor(1.0 / grid.spacing + 1e-9)));  // mdpocket's 2 A cube
   const auto add = [&](CavityKind kind, const std::vector<Cavity>& list) {
     for (std::size_t r = 0; r < list.size(); ++r) {
