@@ -3,9 +3,8 @@
 """The include graph keeps the layering of docs/architecture.md.
 
 Reads every #include "..." of libalpha/, molecule/ and apps/ and checks:
-  - no cycle between files; in molecule and apps a header and its source
-    count as one unit (x.cpp's includes are x's), so a cycle through a
-    source is one too (libalpha: between files as they are);
+  - no cycle between files; a header and its source count as one unit
+    (x.cpp's includes are x's), so a cycle through a source is one too;
   - no arrow up the layers: libalpha -> molecule -> apps, and inside
     molecule up the stages util -> structure -> cavities -> ranking ->
     outputs -> batch -> (analysis.cpp, trajectory); a public header
@@ -43,10 +42,10 @@ def files(folder, patterns=("*.cpp", "*.hpp")):
         yield from sorted((root / folder).rglob(pattern))
 
 
-# libalpha (one flat layer, one unit per file), molecule's stages and apps
-# (one unit per file stem).
+# libalpha (one flat layer), molecule's stages and apps: one unit per file
+# stem (include/alpha/x.hpp, src/x.cpp and src/x.hpp are x).
 for f in files("libalpha"):
-    unit_of[f] = unit("libalpha", str(f.relative_to(root / "libalpha")), 0)
+    unit_of[f] = unit("libalpha", f.stem, 0)
     if "include" in f.relative_to(root / "libalpha").parts:
         public.add(f)
 sources = {}  # molecule stem -> stage of its source

@@ -8,9 +8,12 @@
 #include <cstdint>
 #include <optional>
 
-#include "alpha/sizes.hpp"
-
 namespace alpha {
+
+// Defined in alpha/sizes.hpp, whose source (sizes.cpp) computes the
+// functions below: this header includes it not, so the two point one way.
+struct Simplex;
+class SizeKernel;
 
 // An exact size as an unreduced fraction: num / den * 4^unit, den != 0.
 // Cheaper than exact_size (no gcd) when sizes are only compared.
