@@ -42,6 +42,7 @@
 #include "outputs/pocket_outputs.hpp"
 #include "outputs/pocket_report.hpp"
 #include "outputs/tables.hpp"
+#include "outputs/report_assets.hpp"
 #include "progress.hpp"
 
 namespace alphapocket {
@@ -215,6 +216,7 @@ private:
       const molecule::Analysis analysis = molecule::analyse_content(in.path, content, opt_.analysis);
       log_analysis(analysis, spdlog::level::debug);
       molecule::PocketOutputDir out((outdir_ / in.id).string(), opt_.analysis.outputs, &temporaries());
+      out.share_viewer(std::string("../") + molecule::kViewerDir);  // the run's one copy, beside index.html
       molecule::write_outputs(analysis, out);
       for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
       r.status = "ok";

@@ -5,9 +5,10 @@
 // weighted alpha complex of the atoms, cavities, ranked sites, tunnels;
 // docs/architecture.md), then OUTDIR (default <id>_pockets in the current
 // directory) written with the files --outputs chooses (default
-// report,csv,pml,pdb,tunnels: report.json, pockets.csv, sites.csv,
+// report,csv,pml,pdb,tunnels,html: report.json, pockets.csv, sites.csv,
 // structure.cif, pockets.pml, pockets.cxc, pockets.pdb, tunnels.csv,
-// tunnel_profiles.csv, tunnels.pdb; meshes/ only with --outputs all, --mesh
+// tunnel_profiles.csv, tunnels.pdb, and report.html, scene.mvsj, viewer/
+// when the viewer files are installed; meshes/ only with --outputs all, --mesh
 // or --mesh-resolution; docs/outputs.md), then a one-screen summary of the
 // best sites and where each ligand of the file sits (or, with --json, the
 // report) on stdout.
@@ -54,7 +55,7 @@ struct PocketsOptions {
   std::optional<std::string> output_dir;  // -o '' is refused, not the default
   molecule::AnalysisOptions analysis;  // --min-volume, --mesh; .outputs from --outputs
   // Meshes cost 10-20 times the analysis: written when asked for.
-  std::string outputs = molecule::kDefaultOutputs;
+  std::string outputs = std::string(molecule::kDefaultOutputs) + ",html";  // html when Mol* is installed
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
   std::string surface_points;  // --surface-points FILE: ranking/buried_surface.hpp's points as CSV

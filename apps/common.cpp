@@ -17,6 +17,7 @@
 #include "alpha/error.hpp"
 #include "molecule/atom_balls.hpp"
 #include "molecule/output_selection.hpp"
+#include "outputs/report_assets.hpp"
 #include "molecule/radii.hpp"
 
 namespace alphapocket {
@@ -69,7 +70,7 @@ CLI::Validator output_list() {
 }  // namespace
 
 void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where) {
-  sub.add_option("--outputs", list, "What to write to " + where + ": any of report,csv,pml,pdb,meshes,tunnels, or all")
+  sub.add_option("--outputs", list, "What to write to " + where + ": any of report,csv,pml,pdb,meshes,tunnels,html, or all")
       ->type_name("LIST")
       ->capture_default_str()
       ->check(output_list());
@@ -78,6 +79,15 @@ void add_outputs_option(CLI::App& sub, std::string& list, const std::string& whe
 molecule::OutputSelection selected_outputs(const CLI::App& sub, const std::string& list) {
   molecule::OutputSelection selection = molecule::parse_output_selection(list);
   if (sub.count("--mesh") > 0 || sub.count("--mesh-resolution") > 0) selection.meshes = true;
+  // html needs Mol* (report_assets.hpp): asked by name, an error without it; by
+  // default or `all`, left out with a warning.
+  const std::string missing = selection.html ? molecule::missing_viewer_assets() : "";
+  if (!missing.empty()) {
+    if (sub.count("--outputs") > 0 && ("," + list + ",").find(",html,") != std::string::npos)
+      alpha::fail(missing, alpha::ErrorKind::BadInput);
+    spdlog::warn("{}", missing);
+    selection.html = false;
+  }
   return selection;
 }
 

@@ -54,13 +54,14 @@ std::vector<const CLI::Option*> add_structure_options(CLI::App& sub, molecule::S
 // `batch` share: --min-volume, --mesh.
 void add_cavity_options(CLI::App& sub, molecule::AnalysisOptions& options);
 
-// Adds --outputs LIST (report,csv,pml,pdb,meshes,tunnels or all; checked, a
+// Adds --outputs LIST (report,csv,pml,pdb,meshes,tunnels,html or all; checked, a
 // wrong item is a usage error); `where` names the folder they go to in the help.
 void add_outputs_option(CLI::App& sub, std::string& list, const std::string& where);
 
 // The outputs that --outputs `list` selects, with the meshes added when
 // --mesh or --mesh-resolution is on the command line: asking for a mesh
-// format is asking for meshes.
+// format is asking for meshes. html, unless named in `list`, only when the
+// viewer files are installed (molecule/report_assets.hpp).
 molecule::OutputSelection selected_outputs(const CLI::App& sub, const std::string& list);
 
 // A structure file read through the molecule layer; logs (info) what was

@@ -30,3 +30,11 @@ install(FILES ${PROJECT_BINARY_DIR}/alphapocketConfig.cmake ${PROJECT_BINARY_DIR
 file(RELATIVE_PATH pc_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 configure_file(cmake/alphapocket.pc.in ${PROJECT_BINARY_DIR}/alphapocket.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/alphapocket.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# report.html's viewer (molecule/report_assets.hpp looks for it in
+# ../share/alphapocket/viewer from the executable): Mol* from npm (`npm ci
+# --prefix report_assets`; OPTIONAL: without it pockets leaves report.html
+# out with a warning). The pages' own scripts are compiled in.
+install(FILES ${PROJECT_SOURCE_DIR}/report_assets/node_modules/molstar/build/viewer/molstar.js
+              ${PROJECT_SOURCE_DIR}/report_assets/node_modules/molstar/build/viewer/molstar.css
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/alphapocket/viewer OPTIONAL)

@@ -170,7 +170,7 @@ case "$case_name" in
     for f in report.json pockets.csv pockets.pml pockets.pdb meshes/surface.obj meshes/surface.mtl meshes/meshlab.mlp; do
       [[ -s "$tmp/o/1ytjA/$f" ]] || fail "1ytjA/$f missing"
     done
-    run -q pockets "$data/1ytjA.pdb" -o "$tmp/pockets" --mesh obj
+    run -q pockets "$data/1ytjA.pdb" -o "$tmp/pockets" --outputs report,csv,pml,pdb,meshes,tunnels --mesh obj
     expect_success
     (cd "$tmp/pockets" && find . -type f | sort) >"$tmp/a"
     (cd "$tmp/o/1ytjA" && find . -type f | sort) >"$tmp/b"

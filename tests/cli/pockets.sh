@@ -71,7 +71,32 @@ case "$case_name" in
     grep -qF '"structure.cif"), "1a26A")' 1a26A_pockets/pockets.pml || fail "pockets.pml does not load structure.cif"
     grep -qx 'open structure.cif' 1a26A_pockets/pockets.cxc || fail "pockets.cxc does not open structure.cif"
     ! grep -qF "$tmp" 1a26A_pockets/pockets.pml 1a26A_pockets/pockets.cxc || fail "a script names an absolute path"
-    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 10)) ]] || fail "unexpected files: $(tree_of .)"
+    # 10 files, report.html with scene.mvsj and viewer/'s 4 (Mol* is
+    # installed where the tests run: no_molstar is the case without it).
+    [[ $(tree_of "$tmp/work" | wc -w) -eq $((2 + 10 + 2 + 5)) ]] || fail "unexpected files: $(tree_of .)"
+    grep -q '<script src="viewer/molstar.js">' 1a26A_pockets/report.html || fail "report.html does not load viewer/molstar.js"
+    ;;
+  no_molstar)
+    # Without Mol*, the default leaves report.html out with one warning
+    # saying how to install it; asking for html is an error before anything
+    # is written, in pockets and batch; batch's index.html needs no Mol*.
+    mkdir "$tmp/empty"
+    export ALPHAPOCKET_MOLSTAR=$tmp/empty
+    run -q pockets "$pdb" -o "$tmp/o"
+    expect_success
+    [[ $(grep -c "report.html needs Mol\*.* not found in $tmp/empty: run \`npm ci --prefix report_assets\`" "$tmp/err") -eq 1 &&
+       $(wc -l <"$tmp/err") -eq 1 ]] || fail "not one warning line"
+    [[ -s "$tmp/o/report.json" && ! -e "$tmp/o/report.html" && ! -e "$tmp/o/scene.mvsj" && ! -e "$tmp/o/viewer" ]] ||
+      fail "without Mol*: $(tree_of "$tmp/o")"
+    for command in pockets batch; do
+      run "$command" "$pdb" -o "$tmp/bad" --outputs report,html
+      expect_error "report.html needs Mol*" "npm ci --prefix report_assets"
+      [[ ! -e "$tmp/bad" ]] || fail "$command --outputs report,html without Mol* created OUTDIR"
+    done
+    run -q batch "$pdb" -o "$tmp/b"
+    expect_success
+    [[ -s "$tmp/b/index.html" && ! -e "$tmp/b/viewer" ]] || fail "batch without Mol*: $(tree_of "$tmp/b")"
+    grep -qF '"pages":[]' "$tmp/b/index.html" || fail "index.html links to pages"
     ;;
   json)
     # --json: the report on one line, the same as report.json.

@@ -9,6 +9,9 @@ struct OutputSelection {
   bool report = true, csv = true, pdb = true, meshes = true;
   bool pml = true;  // the viewer scripts: pockets.pml, pockets.cxc and structure.cif
   bool tunnels = true;  // tunnels.csv, tunnel_profiles.csv, tunnels.pdb
+  // report.html, scene.mvsj, structure.cif and viewer/ (report_page.hpp):
+  // off unless asked, as it needs the viewer files (report_assets.hpp).
+  bool html = false;
 };
 
 // What `alphapocket pockets` and Python's analyze() write unless told:
@@ -16,7 +19,7 @@ struct OutputSelection {
 // default OutputSelection, as the library's write_outputs takes, is all).
 inline constexpr const char* kDefaultOutputs = "report,csv,pml,pdb,tunnels";
 
-// "report,csv,pml,pdb,meshes,tunnels" (any subset, any order; "all" for
+// "report,csv,pml,pdb,meshes,tunnels,html" (any subset, any order; "all" for
 // every one) -> a selection; throws alpha::Error naming an unknown item.
 OutputSelection parse_output_selection(const std::string& list);
 

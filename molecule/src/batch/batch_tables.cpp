@@ -12,6 +12,9 @@
 #include "alpha/error.hpp"
 #include "util/atomic_file.hpp"
 #include "outputs/tables.hpp"
+#include "batch/batch_page.hpp"
+#include "outputs/report_assets.hpp"
+#include "alphapocket/version.hpp"
 
 namespace molecule {
 namespace {
@@ -185,11 +188,30 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
   std::vector<std::ifstream> in;
   for (const std::string& f : files) in.emplace_back(f, std::ios::binary);
 
+  // index.html always (it needs no file beside it); viewer/ for the
+  // structures' report.html when any has one, and the index links to them
+  // only when viewer/ is there for them (report_assets.hpp).
+  std::error_code ec;
+  const bool have_molstar = missing_viewer_assets().empty();
+  const bool viewer_usable = have_molstar || fs::is_regular_file(dir / kViewerDir / "molstar.js", ec);
+  bool any_page = false;
+  const auto names = [](const Table& t) {
+    std::vector<std::string> out;
+    for (const Column& c : t.columns) out.push_back(c.name);
+    return out;
+  };
+  std::vector<std::string> numeric;
+  for (const Table* t : {&kStructuresTable, &kSitesTable})
+    for (const Column& c : t->columns)
+      if (c.type != ColumnType::Text) numeric.push_back(c.name);
+  BatchPage page(names(kStructuresTable), names(kSitesTable), names(kFailuresTable), numeric);
+
   for (const auto& [id, where] : locations) {
     const std::string line = read_line_at(in.at(where.file), where.offset, files[where.file]);
     const BatchRecord r = parse_record(line);
     records << line << '\n';
     json row = json::array({r.id, r.path, r.status});
+    std::vector<json> site_rows;
     if (r.status == "ok") {
       for (const json& v : r.rows.at("structure")) row.push_back(v);
       for (const char* key : {"sites", "tunnels"})
@@ -197,12 +219,18 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
           json full = json::array({r.id});
           for (const json& v : values) full.push_back(v);
           (key == std::string("sites") ? sites : tunnels).add(full);
+          if (key == std::string("sites")) site_rows.push_back(std::move(full));
         }
     } else {
       while (row.size() < kStructuresTable.columns.size()) row.push_back(nullptr);
-      failures.add(json::array({r.id, r.path, r.category, r.message}));
+      const json failure = json::array({r.id, r.path, r.category, r.message});
+      failures.add(failure);
+      page.add_failure(failure);
     }
     structures.add(row);
+    const bool has_page = viewer_usable && fs::is_regular_file(dir / r.id / "report.html", ec);
+    any_page = any_page || has_page;
+    page.add_structure(row, site_rows, has_page);
   }
 
   for (auto& t : tables) t->finish();
@@ -211,10 +239,25 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
     alpha::fail(db_target + ": cannot close the database", alpha::ErrorKind::BadInput);
   records.close();
   if (!records) alpha::fail(records_target + ": cannot write " + records_tmp.path(), alpha::ErrorKind::BadInput);
+  std::vector<std::unique_ptr<TemporaryFile>> pages;
+  const auto page_file = [&](const fs::path& target, const std::string& content) {
+    pages.push_back(std::make_unique<TemporaryFile>(target.string(), temporaries));
+    std::ofstream out(pages.back()->path(), std::ios::binary | std::ios::trunc);
+    out << content;
+    out.close();
+    if (!out) alpha::fail(target.string() + ": cannot write " + pages.back()->path(), alpha::ErrorKind::BadInput);
+  };
+  if (any_page && have_molstar) {
+    fs::create_directories(dir / kViewerDir, ec);
+    if (ec) alpha::fail((dir / kViewerDir).string() + ": cannot create it: " + ec.message(), alpha::ErrorKind::BadInput);
+    for (const auto& [name, bytes] : viewer_files()) page_file(dir / kViewerDir / name, bytes);
+  }
+  page_file(dir / "index.html", page.html(alphapocket::kVersion));
   // Everything is complete: into place, the records last (they are what a
   // re-run trusts).
   db_tmp.commit();
   for (auto& t : tables) t->commit();
+  for (auto& p : pages) p->commit();
   records_tmp.commit();
 }
 

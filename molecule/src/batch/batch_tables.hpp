@@ -7,6 +7,10 @@
 //   tunnels.csv      one row per tunnel of every structure
 //   failures.tsv     one row per input that failed or was skipped
 //   alphapocket.sqlite  the same four tables (schemas: outputs/tables.hpp)
+//   index.html       the run in a browser (batch/batch_page.hpp), one file
+//   viewer/          Mol* and the script the structures' report.html load,
+//                    when any structure has one and Mol* is installed
+//                    (outputs/report_assets.hpp)
 //
 // They are written from records (batch_record.hpp) kept in a records file
 // (OUTDIR/records.jsonl, one line per finished structure, appended as the

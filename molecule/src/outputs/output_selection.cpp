@@ -11,17 +11,18 @@ namespace molecule {
 namespace {
 
 using Item = std::pair<const char*, bool OutputSelection::*>;
-constexpr std::array<Item, 6> kItems{{{"report", &OutputSelection::report},
+constexpr std::array<Item, 7> kItems{{{"report", &OutputSelection::report},
                                       {"csv", &OutputSelection::csv},
                                       {"pml", &OutputSelection::pml},
                                       {"pdb", &OutputSelection::pdb},
                                       {"meshes", &OutputSelection::meshes},
-                                      {"tunnels", &OutputSelection::tunnels}}};
+                                      {"tunnels", &OutputSelection::tunnels},
+                                      {"html", &OutputSelection::html}}};
 
 }  // namespace
 
 OutputSelection parse_output_selection(const std::string& list) {
-  OutputSelection s{false, false, false, false, false, false};
+  OutputSelection s{false, false, false, false, false, false, false};
   std::size_t begin = 0;
   while (begin <= list.size()) {
     const std::size_t end = std::min(list.find(',', begin), list.size());
@@ -32,7 +33,7 @@ OutputSelection parse_output_selection(const std::string& list) {
     else if (it != kItems.end())
       s.*it->second = true;
     else
-      alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels or all)",
+      alpha::fail("unknown output '" + item + "' (report, csv, pml, pdb, meshes, tunnels, html or all)",
                   alpha::ErrorKind::BadInput);
     begin = end + 1;
   }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <regex>
 #include <system_error>
 
@@ -17,6 +18,8 @@
 #include "molecule/pocket_meshes.hpp"
 #include "outputs/pocket_pdb.hpp"
 #include "outputs/pymol_script.hpp"
+#include "outputs/report_assets.hpp"
+#include "outputs/report_page.hpp"
 #include "outputs/chimerax_script.hpp"
 #include "outputs/structure_copy.hpp"
 #include "outputs/tables.hpp"
@@ -30,7 +33,13 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kOurFiles[] = {"report.json", "pockets.csv", "sites.csv", "pockets.pml", "pockets.cxc", "structure.cif",
-                                     "pockets.pdb", "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb"};
+                                     "pockets.pdb", "tunnels.csv", "tunnel_profiles.csv", "tunnels.pdb",
+                                     "report.html", "scene.mvsj"};
+
+bool is_our_viewer_file(const std::string& name) {
+  static const std::regex kOurs(R"((molstar|report)\.(js|css))");
+  return std::regex_match(name, kOurs);
+}
 
 bool is_our_mesh(const std::string& name) {
   static const std::regex kOurs(R"(((pocket|void)_[0-9]+|surface|molecule)\.(ply|obj|mtl|off|stl)|meshlab\.mlp)");
@@ -55,6 +64,13 @@ std::vector<std::string> foreign_entries(const fs::path& dir, std::size_t max) {
       check(e.path(), "meshes/", [](const fs::directory_entry& m, const std::string& mesh) {
         std::error_code mec;
         return m.is_regular_file(mec) && is_our_mesh(mesh);
+      });
+      return true;
+    }
+    if (name == kViewerDir && e.is_directory(ec)) {
+      check(e.path(), name + "/", [](const fs::directory_entry& m, const std::string& file) {
+        std::error_code mec;
+        return m.is_regular_file(mec) && is_our_viewer_file(file);
       });
       return true;
     }
@@ -137,6 +153,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   // Every file is made in memory first, so that a failure (a mesh OpenMesh
   // refuses, a full disk) leaves the directory as it was.
   std::vector<std::pair<std::string, std::string>> files;  // (name, content)
+  std::vector<std::pair<std::string, fs::path>> copies;    // (name, the file whose content it has)
   warnings_.clear();
   // Invalid UTF-8 in the input's names is replaced, not an error.
   if (selection_.report)
@@ -146,13 +163,17 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     files.emplace_back("pockets.csv", pockets_csv(run));
     files.emplace_back("sites.csv", sites_csv(structure_id(run.file), report));
   }
+  std::optional<StructureCopy> copy;
+  std::optional<ViewerScene> scene;
+  if (selection_.pml || selection_.html) {
+    copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " + run.file +
+                                              ", and its ligands");
+    scene = viewer_scene(run, copy->ligand_ids);
+    files.emplace_back("structure.cif", copy->cif);
+  }
   if (selection_.pml) {
-    StructureCopy copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " +
-                                                            run.file + ", and its ligands");
-    const ViewerScene scene = viewer_scene(run, copy.ligand_ids);
-    files.emplace_back("structure.cif", std::move(copy.cif));
-    files.emplace_back("pockets.pml", pymol_script(run, scene));
-    files.emplace_back("pockets.cxc", chimerax_script(run, scene));
+    files.emplace_back("pockets.pml", pymol_script(run, *scene));
+    files.emplace_back("pockets.cxc", chimerax_script(run, *scene));
   }
   const alpha::AlphaComplex& ac = run.search->shape->complex();
   const Cavities& cavities = run.search->cavities;
@@ -173,6 +194,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
                           " pseudo-atoms left out, beyond the PDB columns' range");
     files.emplace_back("tunnels.pdb", std::move(tunnels.text));
   }
+  std::optional<PocketMeshes> meshes;
   if (selection_.meshes && !run.mesh_format.empty()) {
     std::vector<std::string> names;
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
@@ -182,14 +204,27 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
         files.emplace_back(fs::relative(file.companion_path, path_).string(), std::move(file.companion));
       names.push_back(fs::path(name).filename().string());
     };
-    const PocketMeshes meshes = pocket_meshes(*run.search, run.options.probe, run.mesh_resolution);
-    mesh_seconds_ = meshes.seconds;
-    mesh_file(molecule_mesh_path(run.mesh_format), meshes.surface);
-    for (std::size_t i = 0; i < meshes.pockets.size(); ++i)
-      mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format), meshes.pockets[i]);
-    for (std::size_t i = 0; i < meshes.voids.size(); ++i)
-      mesh_file(cavity_mesh_path("void", i + 1, run.mesh_format), meshes.voids[i]);
+    meshes = pocket_meshes(*run.search, run.options.probe, run.mesh_resolution);
+    mesh_seconds_ = meshes->seconds;
+    mesh_file(molecule_mesh_path(run.mesh_format), meshes->surface);
+    for (std::size_t i = 0; i < meshes->pockets.size(); ++i)
+      mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format), meshes->pockets[i]);
+    for (std::size_t i = 0; i < meshes->voids.size(); ++i)
+      mesh_file(cavity_mesh_path("void", i + 1, run.mesh_format), meshes->voids[i]);
     files.emplace_back(kMeshlabProject, meshlab_project(names));
+  }
+  if (selection_.html) {
+    const nlohmann::ordered_json mvs = molviewspec_scene(run, *scene, "structure.cif", meshes ? &*meshes : nullptr);
+    files.emplace_back("scene.mvsj", mvs.dump(1, '\t', false, nlohmann::ordered_json::error_handler_t::replace));
+    std::vector<std::string> names{"report.html"};
+    for (const auto& f : files) names.push_back(f.first);
+    if (viewer_.empty()) {
+      for (const auto& [name, path] : molstar_files()) copies.emplace_back(std::string(kViewerDir) + "/" + name, path);
+      for (const char* name : {"report.js", "report.css"})
+        files.emplace_back(std::string(kViewerDir) + "/" + name, page_asset(name));
+    }
+    files.emplace_back("report.html", report_page(run, report, mvs, copy->cif, names,
+                                                  viewer_.empty() ? std::string(kViewerDir) : viewer_));
   }
 
   check_ours();  // again: files may have appeared while the run worked
@@ -197,6 +232,10 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   std::vector<std::string> written;
   for (const auto& [name, content] : files) {
     staged.write(name, content);
+    written.push_back(name);
+  }
+  for (const auto& [name, source] : copies) {
+    staged.copy(name, source);
     written.push_back(name);
   }
   staged.commit();
@@ -207,6 +246,9 @@ void remove_pocket_outputs(const std::string& path) {
   std::error_code ec;
   if (!fs::is_directory(path, ec)) return;
   for (const char* name : kOurFiles) fs::remove(fs::path(path) / name, ec);
+  for (const auto& entry : fs::directory_iterator(fs::path(path) / kViewerDir, ec))
+    if (is_our_viewer_file(entry.path().filename().string())) fs::remove(entry.path(), ec);
+  fs::remove(fs::path(path) / kViewerDir, ec);  // only when empty
   for (const auto& entry : fs::directory_iterator(fs::path(path) / "meshes", ec))
     if (is_our_mesh(entry.path().filename().string())) fs::remove(entry.path(), ec);
   fs::remove(fs::path(path) / "meshes", ec);  // only when empty

@@ -16,6 +16,9 @@
 //                 them all
 //   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv),
 //   tunnels.pdb   the tunnels and pores (tunnel_pdb)
+//   report.html   the run in a browser, scene.mvsj its 3D scene as
+//                 MolViewSpec (report_page), viewer/ the viewer files the
+//                 page loads (report_assets)
 //
 // Which of them are written (OutputSelection: all by default, batch
 // writes only the report).
@@ -53,6 +56,10 @@ public:
   // What the last write() could not put in the files, one line each (e.g.
   // pockets.pdb's pseudo-atoms beyond the PDB columns' range).
   const std::vector<std::string>& warnings() const { return warnings_; }
+  // report.html loads its viewer files from directory `relative` (to the
+  // output directory, e.g. "../viewer": a batch run's one copy) instead of
+  // a copy in viewer/ beside it.
+  void share_viewer(const std::string& relative) { viewer_ = relative; }
   // Wall-clock seconds the last write() spent meshing.
   double mesh_seconds() const { return mesh_seconds_; }
 
@@ -68,6 +75,7 @@ private:
   OutputSelection selection_;
   std::filesystem::path target_;  // absolute, through a symbolic link
   TemporaryPaths* temporaries_;
+  std::string viewer_;  // share_viewer; empty: a copy in viewer/
   std::vector<std::string> warnings_;
   double mesh_seconds_ = 0;
 

@@ -82,14 +82,24 @@ void StagedDirectory::remove_sibling() {
   if (temporaries_) temporaries_->erase(sibling_.string());
 }
 
-void StagedDirectory::write(const std::string& file, std::string_view content) {
-  const auto lock = hold();
-  const fs::path path = sibling_ / file;
+namespace {
+
+// `dir`/`file` with its directory made; `name` as StagedDirectory's.
+fs::path made_path(const fs::path& dir, const std::string& file, const std::string& name) {
+  const fs::path path = dir / file;
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   if (ec)
-    alpha::fail(name_ + ": cannot create " + path.parent_path().string() + ": " + ec.message(),
+    alpha::fail(name + ": cannot create " + path.parent_path().string() + ": " + ec.message(),
                 alpha::ErrorKind::BadInput);
+  return path;
+}
+
+}  // namespace
+
+void StagedDirectory::write(const std::string& file, std::string_view content) {
+  const auto lock = hold();
+  const fs::path path = made_path(sibling_, file, name_);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out)
     alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
@@ -97,6 +107,17 @@ void StagedDirectory::write(const std::string& file, std::string_view content) {
   out.close();
   if (out.fail())
     alpha::fail(name_ + ": cannot write " + path.string() + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+}
+
+void StagedDirectory::copy(const std::string& file, const fs::path& source) {
+  const auto lock = hold();
+  const fs::path path = made_path(sibling_, file, name_);
+  std::error_code ec;
+  fs::create_hard_link(source, path, ec);
+  if (ec) fs::copy_file(source, path, ec);
+  if (ec)
+    alpha::fail(name_ + ": cannot copy " + source.string() + " to " + path.string() + ": " + ec.message(),
+                alpha::ErrorKind::BadInput);
 }
 
 void StagedDirectory::commit() {

@@ -37,6 +37,10 @@ public:
   // A file of the new directory; `file` is relative and may name one
   // subdirectory ("meshes/pocket_1.ply"), created as needed.
   void write(const std::string& file, std::string_view content);
+  // A file of the new directory with `source`'s content: a hard link to it
+  // (no copy of its bytes: Mol*'s 5 MB would cost pockets a third of its
+  // time), or a copy where a link cannot be made (another file system).
+  void copy(const std::string& file, const std::filesystem::path& source);
   // Puts the new directory in place of the target and removes the
   // earlier one.
   void commit();

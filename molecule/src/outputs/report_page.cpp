@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "outputs/report_page.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "molecule/residues.hpp"
+#include "outputs/pocket_colors.hpp"
+
+namespace molecule {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::string hex(Rgb c) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02X%02X%02X", c.r, c.g, c.b);
+  return buf;
+}
+
+double rounded(double x) { return std::round(x * 1000) / 1000; }
+
+json point(const alpha::Vec3& p) { return {rounded(p.x), rounded(p.y), rounded(p.z)}; }
+
+json node(const std::string& kind, json params = json::object(), json children = json::array()) {
+  json n = {{"kind", kind}};
+  if (!params.empty()) n["params"] = std::move(params);
+  if (!children.empty()) n["children"] = std::move(children);
+  return n;
+}
+
+json atom_selector(const std::vector<std::size_t>& ids) {
+  json s = json::array();
+  for (const std::size_t id : ids) s.push_back({{"atom_id", id}});
+  return s;
+}
+
+// A component drawn as `type` in one colour.
+json drawn(const json& selector, const std::string& type, const std::string& color, double opacity = 1,
+           const std::string& tooltip = "") {
+  json rep = node("representation", {{"type", type}}, {node("color", {{"color", color}})});
+  if (opacity < 1) rep["children"].push_back(node("opacity", {{"opacity", opacity}}));
+  json component = node("component", {{"selector", selector}}, {std::move(rep)});
+  if (!tooltip.empty()) component["children"].push_back(node("tooltip", {{"text", tooltip}}));
+  return component;
+}
+
+// AlphaFold DB's confidence bands: very high, confident, low, very low.
+std::string plddt_color(double plddt) {
+  if (plddt >= 90) return "#0053D6";
+  if (plddt >= 70) return "#65CBF3";
+  if (plddt >= 50) return "#FFDB13";
+  return "#FF7D45";
+}
+
+// The cartoon: grey, or by pLDDT band for a predicted model (atom ids of
+// structure.cif: atom i is id i + 1).
+json cartoon(const Structure& structure) {
+  json rep = node("representation", {{"type", "cartoon"}}, {node("color", {{"color", hex(kMoleculeColor)}})});
+  if (structure.report.predicted) {
+    std::map<std::string, std::vector<std::size_t>> bands;
+    for (std::size_t i = 0; i < structure.atoms.size(); ++i)
+      bands[plddt_color(structure.atoms[i].b_factor)].push_back(i + 1);
+    for (const auto& [color, ids] : bands)
+      rep["children"].push_back(node("color", {{"color", color}, {"selector", atom_selector(ids)}}));
+  }
+  return node("component", {{"selector", "polymer"}}, {std::move(rep)});
+}
+
+json sphere(const SinkSphere& s, const std::string& color) {
+  return node("primitive", {{"kind", "ellipsoid"}, {"center", point(s.center)}, {"radius", rounded(s.radius)}, {"color", color}});
+}
+
+json cast(const TriangleMesh& mesh, const std::string& color) {
+  json vertices = json::array(), indices = json::array();
+  for (const alpha::Vec3& p : mesh.points)
+    for (const double x : {p.x, p.y, p.z}) vertices.push_back(rounded(x));
+  for (const auto& t : mesh.triangles)
+    for (const alpha::Index i : t) indices.push_back(i);
+  return node("primitive", {{"kind", "mesh"}, {"vertices", std::move(vertices)}, {"indices", std::move(indices)},
+                            {"color", color}});
+}
+
+// The tables' data: report.json's sites with their cavity's MS volume,
+// depth and mouths, its tunnels, ligands and the run's description.
+json page_data(const PocketRun& run, const json& report) {
+  json sites = json::array();
+  for (const json& s : report.at("sites")) {
+    const json& c = report.at(s.at("kind") == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
+    json residues = json::array();
+    for (const json& r : s.at("lining_residues")) residues.push_back(r.at("id"));
+    sites.push_back({{"rank", s.at("rank")},
+                     {"kind", s.at("kind")},
+                     {"cavity_rank", s.at("cavity_rank")},
+                     {"probability", s.at("probability")},
+                     {"score", s.at("score")},
+                     {"sa_volume", s.at("sa_volume")},
+                     {"ms_volume", c.at("ms_volume")},
+                     {"depth", c.at("depth")},
+                     {"mouths", c.at("mouths")},
+                     {"mean_plddt", s.at("mean_plddt")},
+                     {"center", s.at("center")},
+                     {"residues", std::move(residues)},
+                     {"ligands", s.at("ligands")}});
+  }
+  json tunnels = json::array();
+  for (const json& t : report.at("tunnels")) {
+    json residues = json::array();
+    for (const json& r : t.at("lining_residues")) residues.push_back(r.at("id"));
+    tunnels.push_back({{"rank", t.at("rank")},
+                       {"kind", t.at("kind")},
+                       {"bottleneck_radius", t.at("bottleneck_radius")},
+                       {"bottleneck_center", t.at("bottleneck_center")},
+                       {"length", t.at("length")},
+                       {"profile", t.at("profile")},
+                       {"residues", std::move(residues)}});
+  }
+  json ligands = json::array();
+  for (const json& l : report.at("ligands"))
+    ligands.push_back({{"id", l.at("id")}, {"kept", l.at("kept")}, {"site", l.at("site")},
+                       {"nearest_site", l.at("nearest_site")}, {"distance", l.at("distance")}});
+  return {{"file", run.file},
+          {"alphapocket", run.version},
+          {"input", report.at("input")},
+          {"parameters", report.at("parameters")},
+          {"molecule", report.at("molecule")},
+          {"sites", std::move(sites)},
+          {"tunnels", std::move(tunnels)},
+          {"ligands", std::move(ligands)}};
+}
+
+}  // namespace
+
+json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std::string& structure_url,
+                       const PocketMeshes* meshes) {
+  const Structure& structure = *run.structure;
+  // Each lining atom's whole residue, as the scripts show it.
+  std::map<std::string, std::vector<std::size_t>> residue_atoms;
+  std::vector<std::string> residue_of(structure.atoms.size());
+  for (std::size_t i = 0; i < structure.atoms.size(); ++i) {
+    residue_of[i] = residue_id(structure.atoms[i]);
+    residue_atoms[residue_of[i]].push_back(i + 1);
+  }
+  const auto whole_residues = [&](const std::vector<std::size_t>& ids) {
+    std::set<std::string> seen;
+    std::vector<std::size_t> out;
+    for (const std::size_t id : ids)
+      if (id <= structure.atoms.size() && seen.insert(residue_of[id - 1]).second) {
+        const auto& atoms = residue_atoms[residue_of[id - 1]];
+        out.insert(out.end(), atoms.begin(), atoms.end());
+      }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+
+  json model = node("structure", {{"type", "model"}});
+  json& parts = model["children"] = json::array();
+  parts.push_back(cartoon(structure));
+  parts.push_back(drawn("polymer", "surface", hex(kMoleculeColor), 0.25));
+  if (!scene.ligand_ids.empty()) {
+    json ligands = drawn(atom_selector(scene.ligand_ids), "ball_and_stick", hex(kLigandColor));
+    parts.push_back(std::move(ligands));
+  }
+  json spaces = json::array();
+  for (const SceneCavity& c : scene.cavities) {
+    if (c.site_rank == 0) continue;
+    const std::string color = hex(c.color), name = "site " + std::to_string(c.site_rank) + " (" + c.name + ")";
+    if (c.shown) parts.push_back(drawn(atom_selector(whole_residues(c.lining_ids)), "ball_and_stick", color, 1, name));
+    json group = node("primitives", {{"color", color}, {"opacity", c.site_rank == 1 ? 0.9 : 0.6}, {"tooltip", name}});
+    json& shapes = group["children"] = json::array();
+    const bool is_void = c.name.rfind("void_", 0) == 0;
+    const std::size_t index = std::stoul(c.name.substr(c.name.find('_') + 1)) - 1;
+    const std::vector<TriangleMesh>* casts = meshes ? (is_void ? &meshes->voids : &meshes->pockets) : nullptr;
+    if (casts && index < casts->size() && !(*casts)[index].triangles.empty())
+      shapes.push_back(cast((*casts)[index], color));
+    else
+      for (const SinkSphere& s : c.space) shapes.push_back(sphere(s, color));
+    if (!shapes.empty() && c.shown) spaces.push_back(std::move(group));
+  }
+  json root = node("root");
+  json& top = root["children"] = json::array();
+  top.push_back(node("canvas", {{"background_color", "white"}}));
+  top.push_back(node("download", {{"url", structure_url}},
+                     {node("parse", {{"format", "mmcif"}}, {std::move(model)})}));
+  for (json& s : spaces) top.push_back(std::move(s));
+  for (const ScenePath& p : scene.paths) {
+    json group = node("primitives", {{"color", hex(p.color)}, {"opacity", 0.7}, {"tooltip", p.name}});
+    json& shapes = group["children"] = json::array();
+    for (const SinkSphere& s : p.spheres) shapes.push_back(sphere(s, hex(p.color)));
+    if (!shapes.empty()) top.push_back(std::move(group));
+  }
+  // Named where the ligand is: its heavy atoms' mean.
+  json labels = node("primitives", {{"label_color", "black"}});
+  json& texts = labels["children"] = json::array();
+  for (const HeteroGroup& g : structure.hetero_groups) {
+    alpha::Vec3 sum{0, 0, 0};
+    for (const Atom& a : g.atoms) sum = sum + a.position;
+    const double n = double(g.atoms.size());
+    const std::string id = g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num);
+    texts.push_back(node("primitive", {{"kind", "label"}, {"position", point({sum.x / n, sum.y / n, sum.z / n})},
+                                       {"text", id}, {"label_size", 1.5}}));
+  }
+  if (!texts.empty()) top.push_back(std::move(labels));
+  return {{"metadata", {{"version", "1"}, {"title", "alphapocket " + run.version + ": sites of " + run.file}}},
+          {"root", std::move(root)}};
+}
+
+std::string script_json(const json& value) {
+  const std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    if (c == '<') out += "\\u003c";
+    else if (c == '>') out += "\\u003e";
+    else if (c == '&') out += "\\u0026";
+    else out += c;
+  }
+  return out;
+}
+
+std::string html_text(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string report_page(const PocketRun& run, const json& report, const json& mvs, const std::string& structure_cif,
+                        const std::vector<std::string>& files, const std::string& viewer) {
+  const std::string at = html_text(viewer) + "/";
+  json data = page_data(run, report);
+  data["files"] = files;
+  data["mvs"] = mvs;
+  data["structure"] = structure_cif;
+  std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  page += "<title>alphapocket: " + html_text(run.file) + "</title>\n";
+  page += "<link rel=\"stylesheet\" href=\"" + at + "molstar.css\">\n<link rel=\"stylesheet\" href=\"" + at + "report.css\">\n";
+  page += "</head>\n<body>\n<noscript>This page needs JavaScript; report.json holds the same results.</noscript>\n";
+  page += "<script type=\"application/json\" id=\"alphapocket-data\">" + script_json(data) + "</script>\n";
+  page += "<script src=\"" + at + "molstar.js\"></script>\n<script src=\"" + at + "report.js\"></script>\n";
+  page += "</body>\n</html>\n";
+  return page;
+}
+
+}  // namespace molecule
