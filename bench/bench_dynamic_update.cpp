@@ -1,14 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
-// Dynamic update against rebuilding, in one run: random points moved by a
-// fraction of their mean nearest-neighbour distance, the time of
+// Dynamic update against rebuilding, in one run: the time of
 // Triangulation::move_points over that of building the moved points
-// afresh (medians). Usage: bench_dynamic_update [reps_1e5 reps_1e6]. See README.md.
+// afresh (medians), and that of the AlphaComplex recomputed on top. Either
+// random points moved by a fraction of their mean nearest-neighbour
+// distance, or the frames of a trajectory (a multi-frame .gro file, as
+// dynamic_update_md.sh writes: atoms weighted by their radius squared).
+// Usage: bench_dynamic_update [reps_1e5 reps_1e6] | --frames FILE.gro [reps]. See README.md.
 #include <time.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "alpha/alpha_complex.hpp"
 #include "alpha/triangulation.hpp"
 #include "median.hpp"
 #include "point_sets.hpp"
@@ -41,17 +49,15 @@ double mean_nearest(const alpha::Triangulation& t) {
         const double d = alpha::norm(t.point(a) - t.point(b));
         best[a] = std::min(best[a], d), best[b] = std::min(best[b], d);
       }
-  double sum = 0;
-  for (double d : best) sum += d;
-  return sum / double(best.size());
+  double sum = 0, count = 0;
+  for (double d : best)
+    if (std::isfinite(d)) sum += d, ++count;
+  return sum / count;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const int reps_small = argc > 1 ? std::atoi(argv[1]) : 5, reps_large = argc > 2 ? std::atoi(argv[2]) : 3;
-  std::printf("%8s %6s %6s %4s %10s %10s %7s %10s %8s\n", "n", "moved", "by", "reps", "build s", "update s", "ratio",
-              "relocated", "rebuilt");
+void random_sets(int reps_small, int reps_large) {
+  std::printf("%8s %6s %6s %4s %9s %9s %7s %10s %8s %8s %7s %7s\n", "n", "moved", "by", "reps", "build s", "update s",
+              "ratio", "relocated", "flips/n", "rebuilt", "complex", "c/build");
   struct Move {
     double share, by;  // of the points; in mean nearest-neighbour distances
   };
@@ -60,9 +66,12 @@ int main(int argc, char** argv) {
     const alpha::Triangulation t0(start);
     const double nn = mean_nearest(t0);
     const int reps = n > 100000 ? reps_large : reps_small;
-    for (const Move move : {Move{1, 0.05}, Move{1, 0.1}, Move{1, 0.2}, Move{1, 0.5}, Move{0.01, 0.5}, Move{0.01, 2}}) {
+    std::vector<double> complex;
+    for (int r = 0; r < reps; ++r) complex.push_back(seconds_of([&] { alpha::AlphaComplex k(t0); }));
+    for (const Move move : {Move{1, 0.05}, Move{1, 0.2}, Move{1, 0.5}, Move{0.1, 0.05}, Move{0.1, 0.2},
+                            Move{0.1, 0.5}, Move{0.01, 0.5}, Move{0.01, 2}}) {
       std::vector<double> build, update;
-      double relocated = 0;
+      double relocated = 0, flips = 0;
       int rebuilt = 0;
       for (int r = 0; r < reps; ++r) {
         const std::vector<Vec3> moved = testing::jitter(start, move.by * nn, 100 + r);
@@ -74,13 +83,99 @@ int main(int argc, char** argv) {
         alpha::UpdateReport report;
         update.push_back(seconds_of([&] { report = t.move_points(ids, to); }));
         relocated = double(report.relocated) / double(n);
+        flips = double(report.flips23 + report.flips32 + report.flips41) / double(n);
         rebuilt += report.rebuilt;
         build.push_back(seconds_of([&] { alpha::Triangulation fresh(std::move(all)); }));
       }
-      const double b = bench::median(build), u = bench::median(update);
-      std::printf("%8zu %5.0f%% %6.2f %4d %10.3f %10.3f %7.2f %9.2f%% %5d/%d\n", n, 100 * move.share, move.by, reps, b,
-                  u, u / b, 100 * relocated, rebuilt, reps);
+      const double b = bench::median(build), u = bench::median(update), k = bench::median(complex);
+      std::printf("%8zu %5.0f%% %6.2f %4d %9.3f %9.3f %7.2f %9.2f%% %8.3f %6d/%d %7.3f %7.2f\n", n, 100 * move.share,
+                  move.by, reps, b, u, u / b, 100 * relocated, flips, rebuilt, reps, k, k / b);
       std::fflush(stdout);
     }
   }
+}
+
+// Radius (A) by the atom name's first letter; coordinates of .gro are in nm.
+double radius_of(const std::string& name) {
+  const std::size_t k = name.find_first_not_of(' ');
+  switch (k == std::string::npos ? ' ' : name[k]) {
+    case 'H': return 1.1;
+    case 'N': return 1.55;
+    case 'O': return 1.52;
+    case 'S': return 1.8;
+    default: return 1.7;
+  }
+}
+
+struct Frame {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+};
+
+std::vector<Frame> read_gro(const char* path) {
+  std::ifstream in(path);
+  std::vector<Frame> frames;
+  std::string line;
+  while (std::getline(in, line) && std::getline(in, line)) {
+    const std::size_t atoms = std::stoul(line);
+    Frame f;
+    for (std::size_t i = 0; i < atoms && std::getline(in, line); ++i) {
+      if (line.size() < 44) throw std::runtime_error(std::string(path) + ": short atom line");
+      f.points.push_back({10 * std::stod(line.substr(20, 8)), 10 * std::stod(line.substr(28, 8)),
+                          10 * std::stod(line.substr(36, 8))});
+      const double r = radius_of(line.substr(10, 5));
+      f.weights.push_back(r * r);
+    }
+    std::getline(in, line);  // the box
+    frames.push_back(std::move(f));
+  }
+  return frames;
+}
+
+// Per pair of consecutive frames: the update from one to the next against
+// building the next (each timed over `reps` runs), medians over the pairs.
+void trajectory(const char* path, int reps) {
+  const std::vector<Frame> frames = read_gro(path);
+  if (frames.size() < 2) {
+    std::fprintf(stderr, "%s: fewer than 2 frames\n", path);
+    std::exit(1);
+  }
+  std::vector<double> ratio, complex_ratio, moved_nn, flips, relocated;
+  int rebuilt = 0;
+  for (std::size_t f = 0; f + 1 < frames.size(); ++f) {
+    const alpha::Triangulation t0(frames[f].points, frames[f].weights);
+    const Frame& next = frames[f + 1];
+    double rms = 0;
+    for (std::size_t i = 0; i < next.points.size(); ++i) { const Vec3 d = next.points[i] - frames[f].points[i]; rms += alpha::dot(d, d); }
+    moved_nn.push_back(std::sqrt(rms / double(next.points.size())) / mean_nearest(t0));
+    std::vector<alpha::Triangulation> copies(reps, t0);
+    alpha::UpdateReport report;
+    const double u = seconds_of([&] {
+      for (auto& t : copies) report = t.move_points(next.points, next.weights);
+    });
+    const double b = seconds_of([&] {
+      for (int r = 0; r < reps; ++r) alpha::Triangulation fresh(next.points, next.weights);
+    });
+    const double k = seconds_of([&] {
+      for (int r = 0; r < reps; ++r) alpha::AlphaComplex complex(copies[0]);
+    });
+    ratio.push_back(u / b), complex_ratio.push_back(k / b);
+    flips.push_back(double(report.flips23 + report.flips32 + report.flips41) / double(next.points.size()));
+    relocated.push_back(double(report.relocated) / double(next.points.size()));
+    rebuilt += report.rebuilt;
+  }
+  std::printf("%s: %zu atoms, %zu frame pairs (medians): rms move %.3f NN, update/build %.2f, "
+              "complex/build %.2f, flips/atom %.3f, relocated %.2f%%, rebuilt %d\n",
+              path, frames[0].points.size(), ratio.size(), bench::median(moved_nn), bench::median(ratio),
+              bench::median(complex_ratio), bench::median(flips), 100 * bench::median(relocated), rebuilt);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc > 2 && std::strcmp(argv[1], "--frames") == 0) {
+    trajectory(argv[2], argc > 3 ? std::atoi(argv[3]) : 50);
+    return 0;
+  }
+  random_sets(argc > 1 ? std::atoi(argv[1]) : 5, argc > 2 ? std::atoi(argv[2]) : 3);
 }

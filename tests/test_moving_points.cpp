@@ -86,6 +86,38 @@ TEST_CASE("moving random points gives the fresh build's cells", "[dynamic]") {
   }
 }
 
+TEST_CASE("small moves of every point are mended by 2-3, 3-2 and 4-1 flips", "[dynamic]") {
+  for (const bool weighted : {false, true}) {
+    INFO("weighted " << weighted);
+    const std::vector<Vec3> start = testing::random_points(2000, 81);
+    const std::vector<double> w0 = weighted ? testing::random_weights(start.size(), 82, 0.0, 0.02) : std::vector<double>{};
+    Triangulation t(start, w0);
+    std::vector<double> w = w0;
+    if (weighted)
+      for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.001 * std::sin(double(i)));
+    const UpdateReport r = t.move_points(testing::jitter(start, 0.03 * mean_nearest(start), 83), w);
+    REQUIRE_FALSE(r.rebuilt);
+    CHECK(r.flips23 > 0);
+    CHECK(r.flips32 > 0);
+    // Weights that shrink make some balls redundant: 4-1 flips hide them.
+    CHECK((r.flips41 > 0) == weighted);
+    require_fresh(t);
+  }
+}
+
+TEST_CASE("weights that change more: facets no flip mends send a vertex back", "[dynamic]") {
+  const std::vector<Vec3> start = testing::random_points(3000, 5);
+  const std::vector<double> w0 = testing::random_weights(start.size(), 6, 0.0, 0.02);
+  Triangulation t(start, w0);
+  std::vector<double> w = w0;
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.003 * std::sin(3.0 * double(i)));
+  const UpdateReport r = t.move_points(testing::jitter(start, 0.0006, 7), w);
+  REQUIRE_FALSE(r.rebuilt);
+  CHECK(r.flips41 > 0);
+  CHECK(r.relocated > 0);
+  require_fresh(t);
+}
+
 TEST_CASE("repeated moves of part of the points", "[dynamic]") {
   std::vector<Vec3> p = testing::random_points(1200, 3);
   const double nn = mean_nearest(p);

@@ -6,20 +6,22 @@
 // vertex non-conflicting, is the fresh build's. A move: (1) with the new
 // values, check the cells that hold a moved vertex (orientation, local
 // regularity, hull convexity); (2) give a moved vertex of each failing one
-// its old values back, until nothing fails with these mixed values (when
-// many points move, a facet between two positive finite cells is flipped
-// instead, 2-3 or 3-2, until all are regular); (3) take the reverted
-// vertices out (with the mixed values, the new ones for every vertex left):
-// the cells holding them are refilled from the regular triangulation of
-// their other vertices (and, on removal, the hidden points nearby), with
+// its old values back, until nothing fails with these mixed values, except
+// a facet between two positive finite cells: that is flipped (2-3, 3-2, or
+// 4-1 where a weighted vertex becomes redundant) until all are regular; (3)
+// take the reverted vertices out (with the mixed values, the new ones for
+// every vertex left): the cells holding them, each part of that region on
+// its own, are refilled from the regular triangulation of their other
+// vertices (and, on removal, the hidden points nearby), with
 // the same predicates and perturbation (indices in the same order); (4)
 // insert them at their new places with the construction's own insertion,
 // and test every hidden point again. Whatever this cannot do locally
 // (duplicates made or split, a region no 3D triangulation fills, a facet
-// no flip mends, more than 1/8 of the points to take out: then a rebuild
+// no flip mends, more than 1/32 of the points to take out: then a rebuild
 // costs less) is built afresh: slower, never different.
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <numeric>
 #include <optional>
 
@@ -92,32 +94,48 @@ public:
         if (v != kInfinite && is_moved_[v]) return true;
       return false;
     };
-    // Many moved points: most vertices touch a failing facet (a share of
-    // all of them), so those of positive cells are flipped instead.
-    flips_ = moved.size() > n / kMaxShare;
+    // A failing facet between two positive finite cells is flipped; the
+    // rest (inverted cells, the hull) sends a moved vertex back. Beyond
+    // kMaxShare of the points sent back, taking them out and inserting
+    // them costs more than a rebuild: stop as soon as that is passed (a
+    // few always go: on a small set either costs little).
     Kernel now = t_.kernel();
-    // Beyond this share taking out and inserting costs more than a rebuild
-    // (beyond a smaller one with flips, which cost too): stop as soon as it is passed.
-    limit_ = n / (flips_ ? kMaxFlipShare : kMaxShare);
+    limit_ = std::max(n / kMaxShare, kMinLimit);
     for (Index c = 0; c < t_.cells_.size() && pending_.size() <= limit_; ++c)
       if (touched(c)) check(now, c, [&](Index other) { return other < c || !touched(other); });
     if (pending_.size() > limit_) return false;
     // (2) The moved vertices of what failed go back to their old values,
-    // and so do those of what then fails around them: the cells are
-    // regular for these mixed values.
+    // and so do those of what then fails around them, and the failing
+    // facets between positive cells are flipped; where no flip mends one
+    // (yet), a moved vertex of it goes back too, and so on: the cells are
+    // then regular for these mixed values.
     at_ = t_.points_, at_w_ = t_.weights_;
     Kernel mixed(at_.data(), at_w_.empty() ? nullptr : at_w_.data());
     std::vector<Index> star;
-    for (std::size_t k = 0; k < pending_.size() && pending_.size() <= limit_; ++k) {
-      const Index u = pending_[k];
-      at_[u] = before_[u];
-      if (!at_w_.empty()) at_w_[u] = before_w_[u];
-      reverted_[u] = 1;
-      star_of(u, star);
-      for (Index c : star) check(mixed, c, [](Index) { return true; });
+    for (std::size_t k = 0;;) {
+      for (; k < pending_.size() && pending_.size() <= limit_; ++k) {
+        const Index u = pending_[k];
+        at_[u] = before_[u];
+        if (!at_w_.empty()) at_w_[u] = before_w_[u];
+        reverted_[u] = 1;
+        if (t_.status_[u] != PointStatus::vertex) continue;  // hidden by a 4-1 flip: in no cell
+        star_of(u, star);
+        for (Index c : star) check(mixed, c, [](Index) { return true; });
+      }
+      if (stuck_ || pending_.size() > limit_) return false;
+      if (flip_all(mixed)) break;
+      const std::size_t sent = pending_.size();
+      std::vector<Index> unflipped;
+      unflipped.swap(flip_queue_);
+      for (Index c : unflipped) {
+        const Cell& cell = t_.cells_[c];
+        for (int i = 0; i < 4; ++i) {
+          const Index far = t_.cells_[cell.n[i]].v[t_.mirror_index(c, i)];
+          if (far != kInfinite && mixed.power_conflict(cell.v, far)) take_moved(cell.v, far);
+        }
+      }
+      if (stuck_ || pending_.size() == sent) return false;
     }
-    if (stuck_ || pending_.size() > limit_) return false;
-    if (flips_ && !flip_all(mixed)) return false;
     // (3) Taking them out leaves the regular triangulation of the other
     // vertices at their new values; (4) they go in at their new places, and
     // every hidden point is tested again.
@@ -160,14 +178,17 @@ public:
     return reinsert(std::move(added));
   }
 
-  std::size_t relocated() const { return relocated_; }
-  std::size_t reinserted() const { return reinserted_; }
+  // What it did, into `report`.
+  void tell(UpdateReport& report) const {
+    report.relocated = relocated_, report.reinserted = reinserted_;
+    report.flips23 = flips23_, report.flips32 = flips32_, report.flips41 = flips41_;
+  }
   std::vector<Index> take_free_cells() { return std::move(free_); }
 
 private:
   static constexpr std::uint32_t kDead = ~0u;
-  static constexpr std::size_t kMaxShare = 8;  // of the points taken out and inserted, at most 1/kMaxShare
-  static constexpr std::size_t kMaxFlipShare = 32;  // the same when flipping
+  static constexpr std::size_t kMaxShare = 32;  // of the points taken out and inserted, at most 1/kMaxShare
+  static constexpr std::size_t kMinLimit = 64;   // or this many
   std::size_t limit_ = 0;
   Triangulation& t_;
   std::vector<Vec3> before_;
@@ -175,13 +196,12 @@ private:
   std::vector<Vec3> at_;  // the values the cells are regular for, which take_out uses
   std::vector<double> at_w_;
   bool stuck_ = false;
-  bool flips_ = false;  // regularity restored by flips where cells keep their orientation
-  std::vector<Index> flip_queue_;  // cells that may have a facet to flip  // a failing cell without a moved vertex: cannot happen, yet never left as is
+  std::vector<Index> flip_queue_;  // cells that may have a facet to flip
   std::vector<char> is_moved_, removed_, reverted_, pending_mark_;
   std::vector<Index> hidden_, pending_, free_;
   std::vector<std::uint32_t> cell_stamp_;  // kDead, else the last take_out that saw it
   std::uint32_t stamp_ = 0;
-  std::size_t relocated_ = 0, reinserted_ = 0;
+  std::size_t relocated_ = 0, reinserted_ = 0, flips23_ = 0, flips32_ = 0, flips41_ = 0;
 
   // Whether a point of ids is a duplicate or represents one.
   bool involves_duplicates(const std::vector<Index>& ids) const {
@@ -210,7 +230,7 @@ private:
                                                           cell.v[kFacet[inf][2]], far)
                                      : kernel.power_conflict(cell.v, far);
       if (!conflict) continue;
-      if (flips_ && inf < 0 && !bad) flip_queue_.push_back(c);  // both cells finite: a flip may mend it
+      if (inf < 0 && !bad) flip_queue_.push_back(c);  // both cells finite: a flip may mend it
       else take_moved(cell.v, far);
     }
   }
@@ -252,6 +272,7 @@ private:
     if (s_ab < 0 && s_bc < 0 && s_ca < 0) {
       const Index old[] = {c, nb};
       const std::array<Index, 4> made[] = {{a, b, e, d}, {b, cc, e, d}, {cc, a, e, d}};
+      ++flips23_;
       return replace(old, made);
     }
     // Outside across one edge xy only: the third cell xyde around it.
@@ -259,6 +280,9 @@ private:
     if (s_ab > 0 && s_bc < 0 && s_ca < 0) x = a, y = b, z = cc;
     else if (s_bc > 0 && s_ab < 0 && s_ca < 0) x = b, y = cc, z = a;
     else if (s_ca > 0 && s_ab < 0 && s_bc < 0) x = cc, y = a, z = b;
+    else if (s_ab > 0 && s_ca > 0 && s_bc < 0) return flip41(kernel, c, nb, a, b, cc, d, e);
+    else if (s_ab > 0 && s_bc > 0 && s_ca < 0) return flip41(kernel, c, nb, b, cc, a, d, e);
+    else if (s_bc > 0 && s_ca > 0 && s_ab < 0) return flip41(kernel, c, nb, cc, a, b, d, e);
     else return false;
     const Index third = cells[c].n[t_.index_of(c, z)];
     if (t_.index_of(third, e) < 0 || cells[nb].n[t_.index_of(nb, z)] != third) return false;  // degree above 3
@@ -270,7 +294,29 @@ private:
       made[k] = o > 0 ? std::array<Index, 4>{z, d, e, w} : std::array<Index, 4>{d, z, e, w};
     }
     const Index old[] = {c, nb, third};
+    ++flips32_;
     return replace(old, made);
+  }
+
+  // The facet xyz between cells c = xyzd and nb = xyze, where the line de
+  // passes beyond x: mended only when x has just the four cells xyzd, xyze,
+  // xzde, xyde (weighted points: x's ball is then redundant), which become
+  // the one cell yzde; x is hidden, and tested again with the hidden points.
+  bool flip41(Kernel& kernel, Index c, Index nb, Index x, Index y, Index z, Index d, Index e) {
+    if (!t_.weighted()) return false;  // unweighted points are never redundant
+    auto& cells = t_.cells_;
+    const Index across_y = cells[c].n[t_.index_of(c, y)], across_z = cells[c].n[t_.index_of(c, z)];
+    if (t_.index_of(across_y, e) < 0 || t_.index_of(across_z, e) < 0 ||
+        cells[nb].n[t_.index_of(nb, y)] != across_y || cells[nb].n[t_.index_of(nb, z)] != across_z)
+      return false;  // x has more than four cells
+    const int o = kernel.orient3d(y, z, d, e);
+    if (o == 0) return false;
+    const Index old[] = {c, nb, across_y, across_z};
+    const std::array<Index, 4> made[] = {o > 0 ? std::array<Index, 4>{y, z, d, e} : std::array<Index, 4>{z, y, d, e}};
+    ++flips41_;
+    replace(old, made);
+    t_.status_[x] = PointStatus::hidden, t_.vertex_cell_[x] = kNone;
+    return true;
   }
 
   // Replaces the cells `old` by cells with the vertices `made` (positively
@@ -287,13 +333,13 @@ private:
       std::sort(f.begin(), f.end());
       return f;
     };
-    std::array<Outside, 12> outside;  // 2 or 3 cells, 4 facets each
+    std::array<Outside, 16> outside;  // 2 to 4 cells, 4 facets each
     std::size_t outsides = 0;
     for (Index o : old)
       for (int k = 0; k < 4; ++k)
         if (const Index nb = cells[o].n[k]; std::find(old.begin(), old.end(), nb) == old.end())
           outside[outsides++] = {key_of(cells[o].v, k), nb, t_.mirror_index(o, k)};
-    std::array<Index, 3> ids;
+    std::array<Index, 4> ids;
     std::copy(old.begin(), old.end(), ids.begin());
     for (Index o : old) cell_stamp_[o] = kDead;
     for (std::size_t j = old.size(); j < made.size(); ++j) {
@@ -357,20 +403,41 @@ private:
   // become the cells of the regular triangulation of their other vertices
   // (and the hidden points within their box) that lie inside that region.
   // Cells of Reg(P \ vs) inside the region are empty for any subset of
-  // P \ vs holding their vertices, so they are cells of that triangulation too.
+  // P \ vs holding their vertices, so they are cells of that triangulation
+  // too. Each part of the region (its cells joined across facets) is refilled
+  // on its own: one sub-triangulation of all parts would mostly build cells
+  // between far parts, to be thrown away.
   bool take_out(const std::vector<Index>& vs) {
-    auto& cells = t_.cells_;
     if (vs.empty()) return true;
-    // The region: every cell holding one of them.
-    std::vector<Index> stars, star, region;
+    std::vector<Index> stars, star;
     for (Index v : vs) {
       removed_[v] = 1;
+      if (t_.status_[v] != PointStatus::vertex) continue;  // hidden by a 4-1 flip
       star_of(v, star);
       stars.insert(stars.end(), star.begin(), star.end());
     }
     const std::uint32_t in = ++stamp_;
-    for (Index c : stars)
-      if (cell_stamp_[c] != in) cell_stamp_[c] = in, region.push_back(c);
+    for (Index c : stars) cell_stamp_[c] = in;
+    std::vector<Index> part;
+    for (Index c : stars) {
+      if (cell_stamp_[c] != in) continue;  // in a part already
+      const std::uint32_t mark = ++stamp_;
+      cell_stamp_[c] = mark;
+      part.assign(1, c);
+      for (std::size_t k = 0; k < part.size(); ++k)
+        for (Index nb : t_.cells_[part[k]].n)
+          if (cell_stamp_[nb] == in) cell_stamp_[nb] = mark, part.push_back(nb);
+      if (!refill(part, mark)) return false;
+    }
+    for (Index v : vs) t_.status_[v] = PointStatus::hidden, t_.vertex_cell_[v] = kNone;
+    relocated_ += vs.size();
+    return true;
+  }
+
+  // Refills the region `region` (its cells stamped `in`, no other cell of
+  // it across a facet) with the regular triangulation of its vertices left.
+  bool refill(const std::vector<Index>& region, std::uint32_t in) {
+    auto& cells = t_.cells_;
     // The boundary facets, as the region sees them (from inside).
     struct Boundary {
       FacetKey key;
@@ -381,7 +448,7 @@ private:
     };
     std::vector<Boundary> boundary;
     std::vector<Index> ids;  // the sub-triangulation's points, as input ids
-    Vec3 lo = at_[vs[0]], hi = lo;
+    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
     for (Index c : region) {
       const auto& cv = cells[c].v;
       for (int k = 0; k < 4; ++k) {
@@ -467,8 +534,6 @@ private:
         cells[b.outside].n[b.mirror] = number[b.cell];
       }
     }
-    for (Index v : vs) t_.status_[v] = PointStatus::hidden, t_.vertex_cell_[v] = kNone;
-    relocated_ += vs.size();
     return true;
   }
 
@@ -545,8 +610,7 @@ UpdateReport Triangulation::move_points(std::span<const Index> ids, std::span<co
   // points, w: the values before.
   Updater updater(*this, points, w);
   if (updater.move(moved)) {
-    report.relocated = updater.relocated();
-    report.reinserted = updater.reinserted();
+    updater.tell(report);
     return report;
   }
   report.rebuilt = true;
@@ -589,7 +653,7 @@ UpdateReport Triangulation::insert_points(std::span<const Vec3> points, std::spa
   vertex_cell_.resize(all.size(), kNone);
   Updater updater(*this, before, before_w);
   if (updater.insert(first)) {
-    report.reinserted = updater.reinserted();
+    updater.tell(report);
     return report;
   }
   report.rebuilt = true;
@@ -631,7 +695,7 @@ UpdateReport Triangulation::remove_points(std::span<const Index> ids) {
     }
     return report;
   }
-  report.relocated = updater.relocated();
+  updater.tell(report);
   std::vector<Index> free_cells = updater.take_free_cells();
   std::vector<char> dead(cells_.size(), 0);
   for (Index c : free_cells) dead[c] = 1;
