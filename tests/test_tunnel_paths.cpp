@@ -118,13 +118,13 @@ TEST_CASE("tunnel paths: from inside a cage with one window, the tunnel leaves t
   // A start point is taken to the nearest node the probe fits in, however
   // far it lies: the same widest tunnel.
   const std::vector<molecule::TunnelStart> far{{"far", {}, {1e6, 0, 0}}};
-  const std::vector<TunnelPath> from_far = molecule::find_tunnel_paths(*a.ac, a.radii, far, o);
+  const std::vector<TunnelPath> from_far = molecule::find_tunnel_paths(a.shape->complex(), a.radii, far, o);
   REQUIRE(!from_far.empty());
   CHECK(from_far.front().bottleneck_radius == p.bottleneck_radius);
   // A probe wider than the window (1.4): no tunnel, no error.
   TunnelOptions wide = o;
   wide.probe = 3;
-  CHECK(molecule::find_tunnel_paths(*a.ac, a.radii, starts, wide).empty());
+  CHECK(molecule::find_tunnel_paths(a.shape->complex(), a.radii, starts, wide).empty());
   // Closed (the window's ring moved into the sphere's points): no tunnel.
   Atoms closed;
   closed.add(testing::cage_points(200, 6, 0, 0), 1.6);
