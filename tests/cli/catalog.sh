@@ -145,7 +145,7 @@ if [[ $exit_code -ne 0 ]]; then
     [[ $(snapshot "$out") == "$before" ]] || fail "OUTDIR changed: $(snapshot "$out" | tr '\n' ' ')"
   fi
 else
-  [[ $message == - ]] || cat "$tmp/err" "$tmp/out" | grep -qE "$pattern" || fail "no stderr or stdout line matches '$pattern'"
+  [[ $message == - ]] || grep -qE "$pattern" "$tmp/err" "$tmp/out" || fail "no stderr or stdout line matches '$pattern'"
   case $command in
     pockets)
       [[ -s $out/report.json && $(head -c 8 "$out/report.json") != previous ]] || fail "report.json not written"
