@@ -17,8 +17,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 bench_setup "${1:-}"
 reps=${REPS:-5}
 
-median() { sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-
 for ((r = 1; r <= reps; r++)); do
   node "$root/tests/browser/index_test.mjs" "$exe" "$root" synthetic |
     sed -nE 's/.*first screen ([0-9]+) ms .*sort ([0-9]+) ms, filter ([0-9]+) ms.*/\1 \2 \3/p'
