@@ -41,9 +41,9 @@ json atom_selector(const std::vector<std::size_t>& ids) {
 // A component drawn as `type` in one colour.
 json drawn(const json& selector, const std::string& type, const std::string& color, double opacity = 1,
            const std::string& tooltip = "") {
-  json rep = node("representation", {{"type", type}}, {node("color", {{"color", color}})});
+  json rep = node("representation", {{"type", type}}, json::array({node("color", {{"color", color}})}));
   if (opacity < 1) rep["children"].push_back(node("opacity", {{"opacity", opacity}}));
-  json component = node("component", {{"selector", selector}}, {std::move(rep)});
+  json component = node("component", {{"selector", selector}}, json::array({std::move(rep)}));
   if (!tooltip.empty()) component["children"].push_back(node("tooltip", {{"text", tooltip}}));
   return component;
 }
@@ -59,7 +59,7 @@ std::string plddt_color(double plddt) {
 // The cartoon: grey, or by pLDDT band for a predicted model (atom ids of
 // structure.cif: atom i is id i + 1).
 json cartoon(const Structure& structure) {
-  json rep = node("representation", {{"type", "cartoon"}}, {node("color", {{"color", hex(kMoleculeColor)}})});
+  json rep = node("representation", {{"type", "cartoon"}}, json::array({node("color", {{"color", hex(kMoleculeColor)}})}));
   if (structure.report.predicted) {
     std::map<std::string, std::vector<std::size_t>> bands;
     for (std::size_t i = 0; i < structure.atoms.size(); ++i)
@@ -67,7 +67,7 @@ json cartoon(const Structure& structure) {
     for (const auto& [color, ids] : bands)
       rep["children"].push_back(node("color", {{"color", color}, {"selector", atom_selector(ids)}}));
   }
-  return node("component", {{"selector", "polymer"}}, {std::move(rep)});
+  return node("component", {{"selector", "polymer"}}, json::array({std::move(rep)}));
 }
 
 json sphere(const SinkSphere& s, const std::string& color) {
@@ -184,7 +184,7 @@ json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std
   json& top = root["children"] = json::array();
   top.push_back(node("canvas", {{"background_color", "white"}}));
   top.push_back(node("download", {{"url", structure_url}},
-                     {node("parse", {{"format", "mmcif"}}, {std::move(model)})}));
+                     json::array({node("parse", {{"format", "mmcif"}}, json::array({std::move(model)}))})));
   for (json& s : spaces) top.push_back(std::move(s));
   for (const ScenePath& p : scene.paths) {
     json group = node("primitives", {{"color", hex(p.color)}, {"opacity", 0.7}, {"tooltip", p.name}});
