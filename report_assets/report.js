@@ -109,7 +109,7 @@
     ligands.append(el('li', {}, l.id + (l.kept ? ' (kept in the structure)' : '') +
       (l.site ? ` in site ${l.site}` : l.nearest_site ? `: nearest site ${l.nearest_site}, ${fixed(l.distance, 1)} Å` : '')));
   const side = el('section', { id: 'tables' },
-    el('h2', {}, 'Sites'), el('p', { class: 'hint' }, 'Click a row to focus the view on the site; click in the view to find the site.'), sites,
+    el('h2', {}, 'Sites'), el('p', { class: 'hint' }, 'Click a row to focus the view on its site (the others fade), again to see all; click in the view to find the site.'), sites,
     el('h2', {}, 'Tunnels'), data.tunnels.length ? tunnels : el('p', {}, 'No tunnels.'),
     el('h2', {}, 'Ligands and other hetero groups'), data.ligands.length ? ligands : el('p', {}, 'None.'),
     el('h2', {}, 'Parameters'), params,
@@ -165,6 +165,42 @@
     await v.loadMvsData(JSON.stringify(mvs), 'mvsj');
     const camera = v.plugin.canvas3d.camera;
     window.alphapocket.viewer = v;
+    // The sites' and tunnels' drawn parts: the representations under the
+    // scene's nodes site-N (a space), site-N-lining (its residues) and
+    // path-N (a tunnel; rank 0), Mol* tagging a node's state cell with its ref.
+    const state = v.plugin.state.data;
+    const siteParts = [];
+    state.cells.forEach(cell => {
+      if (!cell.obj || !cell.obj.data || !cell.obj.data.repr) return;
+      for (let t = cell.transform; ;) {
+        const m = (t.tags || []).map(tag => /^mvs-ref:(?:site-(\d+)(-lining)?|path-\d+)$/.exec(tag)).find(Boolean);
+        if (m) {
+          siteParts.push({ rank: Number(m[1] || 0), lining: Boolean(m[2]), ref: cell.transform.ref, repr: cell.obj.data.repr });
+          break;
+        }
+        const up = state.tree.transforms.get(t.parent);
+        if (!up || up === t) break;
+        t = up;
+      }
+    });
+    // While a site is focused the other sites fade (their spaces
+    // see-through, their residues hidden) and the tunnels are hidden (their
+    // cyan spheres would cover a site they start from). rank null: all as
+    // the scene has it.
+    const showOnly = rank => {
+      for (const p of siteParts) {
+        const other = rank !== null && p.rank !== rank;
+        if (p.lining || p.rank === 0) state.updateCellState(p.ref, { isHidden: other });
+        else p.repr.setState({ alphaFactor: other ? 0.15 : 1 });
+      }
+      v.plugin.canvas3d.requestDraw();
+    };
+    window.alphapocket.unfocus = () => {
+      showOnly(null);
+      v.plugin.managers.camera.reset();
+      window.alphapocket.focused = null;
+      selectRow(-1);
+    };
     window.alphapocket.focus = index => {
       const e = extents[index];
       // The site and its surroundings, seen from outside the molecule along
@@ -175,12 +211,16 @@
       if (Math.hypot(...out) < 1e-3) out = [0, 1, 2].map(k => camera.state.position[k] - camera.state.target[k]);
       const from = { target: e.center, position: [0, 1, 2].map(k => e.center[k] + out[k]) };
       camera.setState(camera.getFocus(e.center, Math.max(12, e.radius + 6), undefined, undefined, from), 0);
-      v.plugin.canvas3d.requestDraw();
+      showOnly(data.sites[index].rank);
       window.alphapocket.focused = index;
       selectRow(index);
     };
-    sites.querySelectorAll('tbody tr').forEach(tr =>
-      tr.addEventListener('click', () => window.alphapocket.focus(Number(tr.dataset.index))));
+    // A click on a row focuses its site; on the focused row, shows all again.
+    sites.querySelectorAll('tbody tr').forEach(tr => tr.addEventListener('click', () => {
+      const index = Number(tr.dataset.index);
+      if (window.alphapocket.focused === index) window.alphapocket.unfocus();
+      else window.alphapocket.focus(index);
+    }));
     // A click in the view: the site whose space holds the point (or is
     // nearest its centre, within 8 Å).
     v.plugin.behaviors.interaction.click.subscribe(ev => {

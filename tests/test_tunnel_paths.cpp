@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// molecule::find_tunnel_paths (tunnels and pores with radius profiles) on
+// molecule::find_tunnels (tunnels, pores and the ways through cycles with radius profiles) on
 // configurations with closed forms, every profile radius against a scan of
 // all atoms, and gramicidin A against HOLE; molecule::radius_file.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -12,6 +13,7 @@
 
 #include "alpha/point_set_complex.hpp"
 #include "molecule/atom_balls.hpp"
+#include "molecule/cavities.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/radius_file.hpp"
 #include "molecule/structure.hpp"
@@ -98,6 +100,42 @@ TEST_CASE("tunnel paths: a straight channel of rings is one pore of bottleneck R
   // A probe wider than the channel finds no pore.
   o.probe = 1.41;
   CHECK(molecule::find_tunnel_paths(a.shape->complex(), a.radii, {}, o).empty());
+}
+
+TEST_CASE("tunnel paths: the way through a cycle crosses its killing triangle, from end to end", "[tunnels]") {
+  // A channel of rings as above, 0.2 A wider (the probe-grown balls leave
+  // it open at alpha 0) but for the middle ring: its 1-cycle
+  // (find_cavities) dies there, at R - r = 1.5 A; the way through runs
+  // along the axis to the solvent at both ends.
+  Atoms a;
+  for (int k = 0; k < 20; ++k) a.add(testing::ring_points(8, k == 10 ? 3.1 : 3.2, 1.5 * k, k % 2 ? kPi / 8 : 0), 1.6);
+  const alpha::AlphaComplex& ac = a.complex();
+  const molecule::Cavities cavities = molecule::find_cavities(ac, a.radii, {});
+  REQUIRE(!cavities.tunnels.empty());
+  const TunnelOptions o;
+  const molecule::TunnelNetwork network = molecule::find_tunnels(ac, a.radii, {}, cavities.tunnels, o);
+  CHECK(network.paths.empty());  // no start, no pores asked for
+  REQUIRE(network.cycles.size() == cavities.tunnels.size());
+  for (std::size_t k = 0; k < cavities.tunnels.size(); ++k) {
+    const molecule::Tunnel& c = cavities.tunnels[k];
+    const TunnelPath& p = network.cycles[k];
+    check_path(a, p, o);
+    CHECK(std::find(p.triangles.begin(), p.triangles.end(), c.bottleneck_triangle) != p.triangles.end());
+    CHECK(std::abs(c.bottleneck_center.z - 15) < 1e-9);
+    CHECK(std::abs(p.bottleneck_radius - 1.5) < 1e-9);
+    CHECK(norm(p.bottleneck - c.bottleneck_center) < 1e-9);
+    CHECK(std::min(p.start_point.z, p.mouth.z) < 6);  // out of the 28.5 A channel at both ends
+    CHECK(std::max(p.start_point.z, p.mouth.z) > 22.5);
+    for (const auto& q : p.profile) CHECK(std::hypot(q.x.x, q.x.y) < 1e-6);
+  }
+  // A probe wider than the channel: no way through, no profile.
+  TunnelOptions wide = o;
+  wide.probe = 1.51;
+  for (const TunnelPath& p : molecule::find_tunnels(ac, a.radii, {}, cavities.tunnels, wide).cycles)
+    CHECK(p.profile.empty());
+  // A cycle without a killing triangle has no way through.
+  const std::vector<molecule::Tunnel> none(1);
+  CHECK(molecule::find_tunnels(ac, a.radii, {}, none, o).cycles.at(0).profile.empty());
 }
 
 TEST_CASE("tunnel paths: from inside a cage with one window, the tunnel leaves through it", "[tunnels]") {

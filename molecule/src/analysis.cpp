@@ -24,6 +24,7 @@ PocketRun Analysis::run() const {
   r.min_plddt = options.structure.min_plddt;
   if (!options.radii_file.empty()) r.radii = options.radii_file;
   r.paths = &paths;
+  r.cycle_paths = &cycle_paths;
   r.tunnel_starts = tunnel_starts;
   r.tunnels_from = options.tunnels_from;
   r.tunnel_options = options.tunnels;
@@ -67,7 +68,10 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     for (const TunnelStart& s : starts) a.tunnel_starts.push_back(s.label);
     std::vector<double> radii;
     for (const Atom& atom : a.structure.atoms) radii.push_back(atom.radius);
-    a.paths = find_tunnel_paths(a.search.shape->complex(), radii, starts, options.tunnels);
+    TunnelNetwork network =
+        find_tunnels(a.search.shape->complex(), radii, starts, a.search.cavities.tunnels, options.tunnels);
+    a.paths = std::move(network.paths);
+    a.cycle_paths = std::move(network.cycles);
     a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
   } catch (const AnalysisError&) {

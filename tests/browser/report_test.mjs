@@ -10,13 +10,19 @@
 //               no console error, no page error, no such request; the
 //               viewer's canvas shows the structure (non-white pixels); the
 //               sites table has one row per site of report.json; clicking
-//               row 2 points the camera at site 2's centre (and site 2's
-//               colour covers 2% or more of the middle of the view);
-//               clicking the middle of the view then highlights the row
-//               of the site there.
+//               row 2 points the camera at site 2's centre, fades the
+//               other sites in the viewer's state (spaces faded, residues
+//               and tunnels hidden) and site 2 dominates
+//               the middle of a screenshot of the view (90% of its pixels
+//               in the sites' hues, half of the coloured, a tenth of all,
+//               by hue); row 3 moves the focus to site 3, row 3
+//               again un-focuses; clicking the middle of the view then
+//               highlights the row of the site there.
 //   casts_3stdA the same with meshes (--mesh ply): the casts are drawn.
-//   predicted   an AlphaFold model: the same checks but site 2's colour (the
-//               pLDDT cartoon has the sites' hues), pLDDT colours in the scene.
+//   predicted   an AlphaFold model: the same checks but the screenshot's
+//               (its pLDDT cartoon has the sites' hues); with all but the
+//               cartoon hidden, the pLDDT bands' colours fill the middle of
+//               the view, each band of 10% of the residues or more seen.
 //   injection   a file name and a chain name holding <script> and markup:
 //               they stay text (the page shows them verbatim, no script of
 //               theirs runs, no element of theirs exists).
@@ -190,6 +196,81 @@ try {
     if (!residues.includes('<script>alert(3)</script>:')) fail('the chain name is not shown as text: ' + residues);
   }
 
+  // Pixels of the middle of the view (its central 30% by 30%) by hue (the
+  // see-through surface greys colours, keeping their hue): each coloured
+  // pixel goes to the nearest of `colors` ({key, h}) within 8 degrees.
+  const hue = ([r, g, b]) => {
+    const max = Math.max(r, g, b), min = Math.min(r, g, b), d = max - min;
+    if (d === 0) return null;
+    const h = max === r ? ((g - b) / d) % 6 : max === g ? (b - r) / d + 2 : (r - g) / d + 4;
+    return { h: (h * 60 + 360) % 360, s: d / max };
+  };
+  async function middleByHue(colors) {
+    const shot = await viewPixels();
+    const counts = new Map();
+    const [w, h] = [shot.width, shot.height];
+    let middle = 0, coloured = 0;
+    for (let y = Math.floor(h * 0.35); y < h * 0.65; ++y)
+      for (let x = Math.floor(w * 0.35); x < w * 0.65; ++x) {
+        ++middle;
+        const i = 4 * (y * w + x), p = hue(shot.data.slice(i, i + 3));
+        if (!p || p.s < 0.2) continue;
+        ++coloured;
+        let best = null, bestD = 8;
+        for (const c of colors) {
+          const d = Math.min(Math.abs(p.h - c.h), 360 - Math.abs(p.h - c.h));
+          if (d < bestD) [best, bestD] = [c.key, d];
+        }
+        if (best !== null) counts.set(best, (counts.get(best) || 0) + 1);
+      }
+    return { counts, middle, coloured };
+  }
+
+  if (caseName === 'predicted') {
+    // The cartoon in pLDDT colours: with everything else hidden, each band
+    // holding 10% or more of the residues (their CA atoms in structure.cif)
+    // covers 2% or more of the middle's coloured pixels, and the bands 90%
+    // or more of them.
+    const cif = fs.readFileSync(path.join(dir, 'structure.cif'), 'utf8').split('\n');
+    const columns = cif.filter(l => l.startsWith('_atom_site.'));
+    const [bColumn, nameColumn] = ['B_iso_or_equiv', 'label_atom_id'].map(c => columns.indexOf('_atom_site.' + c));
+    const perBand = [0, 0, 0, 0];
+    for (const l of cif.filter(l => l.startsWith('ATOM '))) {
+      const f = l.split(/\s+/), b = Number(f[bColumn]);
+      if (f[nameColumn] === 'CA') ++perBand[b >= 90 ? 0 : b >= 70 ? 1 : b >= 50 ? 2 : 3];
+    }
+    const residues = perBand.reduce((a, b) => a + b, 0);
+    if (residues === 0) fail('no CA atom in structure.cif');
+    await page.evaluate(() => {
+      const state = window.alphapocket.viewer.plugin.state.data;
+      state.cells.forEach(c => {
+        const type = c.transform.params && c.transform.params.type;
+        if (c.obj && c.obj.data && c.obj.data.repr && !(type && type.name === 'cartoon'))
+          state.updateCellState(c.transform.ref, { isHidden: true });
+      });
+      window.alphapocket.viewer.plugin.managers.camera.reset();
+    });
+    let shares = [];
+    const wanted = perBand.map(n => n >= 0.1 * residues);
+    const shown = () => shares.length && wanted.every((w, k) => !w || shares[k] >= 0.02) &&
+                        shares.reduce((a, b) => a + b, 0) >= 0.9;
+    for (const t0 = Date.now(); Date.now() - t0 < 30000 && !shown(); await new Promise(r => setTimeout(r, 1000))) {
+      const m = await middleByHue(bands.map((c, k) => ({ key: k, h: hue(hex(c)).h })));
+      shares = bands.map((c, k) => (m.counts.get(k) || 0) / Math.max(m.coloured, 1));
+    }
+    console.log(`pLDDT bands: residues ${JSON.stringify(perBand)}, shares of the middle's coloured pixels ` +
+                JSON.stringify(shares.map(x => Number(x.toFixed(3)))));
+    if (!shown()) fail(`the cartoon is not in pLDDT colours: residues per band ${perBand}, pixel shares ${shares}`);
+    if (screenshot) {
+      const box = await (await page.$('#viewer')).boundingBox();
+      await page.screenshot({ path: screenshot.replace(/\.png$/, '_plddt.png'), clip: box });
+    }
+    await page.evaluate(() => {
+      const state = window.alphapocket.viewer.plugin.state.data;
+      state.cells.forEach(c => state.updateCellState(c.transform.ref, { isHidden: false }));
+    });
+  }
+
   if (report.sites.length >= 2) {
     // Row 2 -> the camera on site 2.
     await page.click('#sites tbody tr:nth-child(2)');
@@ -200,54 +281,81 @@ try {
     if (off > 0.01) fail(`after clicking row 2 the camera looks at ${target}, site 2's centre is ${center}`);
     const selected = await page.$$eval('#sites tbody tr.selected', trs => trs.map(t => t.dataset.index));
     if (selected.join() !== '1') fail('row 2 is not highlighted after clicking it: ' + selected);
-    // ... and site 2's colour covers 2% or more of the middle of the view
-    // (polled: a loaded machine draws the new frame late).
-    // Pixels by hue (the see-through surface greys colours, keeping their
-    // hue): each coloured pixel goes to the scene colour nearest in hue
-    // (sites, tunnels, ligands), within 8 degrees.
-    const hue = ([r, g, b]) => {
-      const max = Math.max(r, g, b), min = Math.min(r, g, b), d = max - min;
-      if (d === 0) return null;
-      const h = max === r ? ((g - b) / d) % 6 : max === g ? (b - r) / d + 2 : (r - g) / d + 4;
-      return { h: (h * 60 + 360) % 360, s: d / max };
-    };
-    const colors = mvs.root.children.filter(n => n.kind === 'primitives' && n.params.color)
-      .map(n => ({ rank: /^site \d+ /.test(n.params.tooltip || '') ? Number(n.params.tooltip.split(' ')[1]) : 0,
-                   h: hue(hex(n.params.color)).h }));
-    colors.push({ rank: 0, h: hue([255, 255, 0]).h });  // the ligands
-    let ranked = [], middle = 1;
-    const siteTwoShown = () => ranked.some(([rank, n]) => rank === 2 && n >= 0.02 * middle);
-    for (const t0 = Date.now(); caseName !== 'predicted' && Date.now() - t0 < 30000 && !siteTwoShown(); await new Promise(r => setTimeout(r, 1000))) {
-      const shot = await viewPixels();
-      const counts = new Map();
-      const [w, h] = [shot.width, shot.height];
-      for (let y = Math.floor(h * 0.35); y < h * 0.65; ++y)
-        for (let x = Math.floor(w * 0.35); x < w * 0.65; ++x) {
-          const i = 4 * (y * w + x), p = hue(shot.data.slice(i, i + 3));
-          if (!p || p.s < 0.2) continue;
-          let best = null, bestD = 8;
-          for (const c of colors) {
-            const d = Math.min(Math.abs(p.h - c.h), 360 - Math.abs(p.h - c.h));
-            if (d < bestD) [best, bestD] = [c.rank, d];
+    // The other sites faded and the tunnels (rank 0) hidden, in the
+    // viewer's state: spaces at alphaFactor < 1, residues and tunnels
+    // hidden; site 2's as drawn.
+    const parts = () => page.evaluate(() => {
+      const state = window.alphapocket.viewer.plugin.state.data, out = [];
+      state.cells.forEach(cell => {
+        if (!cell.obj || !cell.obj.data || !cell.obj.data.repr) return;
+        for (let t = cell.transform; ;) {
+          const m = (t.tags || []).map(tag => /^mvs-ref:(?:site-(\d+)(-lining)?|path-\d+)$/.exec(tag)).find(Boolean);
+          if (m) {
+            out.push({ rank: Number(m[1] || 0), lining: Boolean(m[2]), hidden: Boolean(cell.state.isHidden),
+                       alpha: cell.obj.data.repr.state.alphaFactor });
+            break;
           }
-          if (best) counts.set(best, (counts.get(best) || 0) + 1);
+          const up = state.tree.transforms.get(t.parent);
+          if (!up || up === t) break;
+          t = up;
         }
-      ranked = [...counts.entries()].sort((a, b) => b[1] - a[1]);
-      middle = (Math.floor(h * 0.65) - Math.floor(h * 0.35)) * (Math.floor(w * 0.65) - Math.floor(w * 0.35));
+      });
+      return out;
+    });
+    const checkFocus = (rank, when) => parts().then(ps => {
+      if (rank !== null && !ps.some(p => p.rank === rank && !p.lining)) fail(`${when}: no drawn space of site ${rank} in the viewer`);
+      for (const p of ps) {
+        const faded = rank !== null && p.rank !== rank;
+        if (p.lining || p.rank === 0 ? p.hidden !== faded : (p.alpha < 1) !== faded)
+          fail(`${when}: ${p.rank ? `site ${p.rank}'s ${p.lining ? 'residues' : 'space'}` : 'a tunnel'} ` +
+               `${faded ? 'not faded' : 'faded'}: ${JSON.stringify(p)}`);
+      }
+    });
+    await checkFocus(2, 'after clicking row 2');
+    // ... and site 2 dominates the middle of the view: 90% or more of its
+    // pixels in the sites' hues are site 2's, they are half or more of its
+    // coloured pixels (the ligands' too) and a tenth of all (polled: a
+    // loaded machine draws the new frame late). Not for the predicted
+    // model: its pLDDT cartoon has the sites' hues.
+    const colors = mvs.root.children.filter(n => n.kind === 'primitives' && /^site \d+ /.test(n.params.tooltip || ''))
+      .map(n => ({ key: Number(n.params.tooltip.split(' ')[1]), h: hue(hex(n.params.color)).h }));
+    colors.push({ key: 0, h: hue([255, 255, 0]).h });  // the ligands
+    let ranked = [], middle = 1, share = 0, ofColoured = 0, ofMiddle = 0;
+    const dominates = () => share >= 0.9 && ofColoured >= 0.5 && ofMiddle >= 0.1;
+    for (const t0 = Date.now(); caseName !== 'predicted' && Date.now() - t0 < 30000 && !dominates(); await new Promise(r => setTimeout(r, 1000))) {
+      const m = await middleByHue(colors);
+      ranked = [...m.counts.entries()].sort((a, b) => b[1] - a[1]);
+      middle = m.middle;
+      const all = ranked.reduce((a, [key, n]) => a + (key ? n : 0), 0);  // the sites' pixels
+      share = (m.counts.get(2) || 0) / Math.max(all, 1);
+      ofColoured = (m.counts.get(2) || 0) / Math.max(m.coloured, 1);
+      ofMiddle = (m.counts.get(2) || 0) / middle;
     }
-    // (Not for the predicted model: its pLDDT-coloured cartoon has the
-    // sites' hues, orange and blue, so hue cannot tell them apart.)
-    if (caseName !== 'predicted' && !siteTwoShown())
-      fail('site 2 covers less than 2% of the middle of the view after focusing it: ' + JSON.stringify(ranked));
     if (screenshot) {
       const box = await (await page.$('main')).boundingBox();
       await page.screenshot({ path: screenshot, clip: box });
     }
-    console.log(`site colours in the middle after focusing site 2 (rank, pixels of ${middle}): ${JSON.stringify(ranked)}`);
+    console.log(`site colours in the middle after focusing site 2 (rank or 0 for the ligands, pixels of ${middle}): ` +
+                `${JSON.stringify(ranked)}; site 2: ${(100 * share).toFixed(1)}% of the sites', ${(100 * ofColoured).toFixed(1)}% of the ` +
+                `coloured, ${(100 * ofMiddle).toFixed(1)}% of the middle`);
+    if (caseName !== 'predicted' && !dominates())
+      fail(`site 2 does not dominate the middle of the view after focusing it: ${(100 * share).toFixed(1)}% of the ` +
+           `sites' pixels, ${(100 * ofColoured).toFixed(1)}% of the coloured, ${(100 * ofMiddle).toFixed(1)}% of all: ` +
+           JSON.stringify(ranked));
+    // Row 3 moves the focus to site 3; row 3 again shows every site.
+    if (report.sites.length >= 3) {
+      await page.click('#sites tbody tr:nth-child(3)');
+      await checkFocus(3, 'after clicking row 3');
+      await page.click('#sites tbody tr:nth-child(3)');
+      await checkFocus(null, 'after clicking row 3 again');
+      if (await page.$('#sites tbody tr.selected')) fail('a row stays highlighted after un-focusing');
+      await page.click('#sites tbody tr:nth-child(2)');
+    }
     // A click on the middle of the view highlights the row of the site there
     // (1a26A: site 2's space is there).
     if (caseName === 'page_1a26A') {
       await page.$$eval('#sites tbody tr', trs => trs.forEach(t => t.classList.remove('selected')));
+      await new Promise(r => setTimeout(r, 1000));
       const box = await (await page.$('#viewer canvas')).boundingBox();
       await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
       for (const t0 = Date.now(); Date.now() - t0 < 20000; await new Promise(r => setTimeout(r, 500)))

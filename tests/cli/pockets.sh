@@ -98,6 +98,29 @@ case "$case_name" in
     [[ -s "$tmp/b/index.html" && ! -e "$tmp/b/viewer" ]] || fail "batch without Mol*: $(tree_of "$tmp/b")"
     grep -qF '"pages":[]' "$tmp/b/index.html" || fail "index.html links to pages"
     ;;
+  viewer_copies)
+    # viewer/ holds copies of Mol*'s files, not links: editing an output in
+    # place leaves the installed files as they were (pockets' viewer/ and
+    # a batch run's one).
+    mkdir "$tmp/molstar"
+    printf '/* Mol* */\n' >"$tmp/molstar/molstar.js"
+    printf '/* style */\n' >"$tmp/molstar/molstar.css"
+    export ALPHAPOCKET_MOLSTAR=$tmp/molstar
+    run -q pockets "$pdb" -o "$tmp/o" --outputs report,html
+    expect_success
+    run -q batch "$pdb" -o "$tmp/b" --outputs report,html
+    expect_success
+    for viewer in "$tmp/o/viewer" "$tmp/b/viewer"; do
+      for f in molstar.js molstar.css; do
+        [[ -f "$viewer/$f" && ! -L "$viewer/$f" ]] || fail "$viewer/$f is not a file"
+        cmp -s "$tmp/molstar/$f" "$viewer/$f" || fail "$viewer/$f differs from Mol*'s"
+        [[ $(stat -c %h "$viewer/$f") -eq 1 ]] || fail "$viewer/$f is linked to another name"
+        echo 'edited' >>"$viewer/$f"
+      done
+    done
+    [[ $(cat "$tmp/molstar/molstar.js") == '/* Mol* */' && $(cat "$tmp/molstar/molstar.css") == '/* style */' ]] ||
+      fail "editing viewer/ changed the installed Mol*"
+    ;;
   json)
     # --json: the report on one line, the same as report.json.
     run pockets "$pdb" -o "$tmp/out dir" --json

@@ -46,6 +46,12 @@ case "$case_name" in
     run pockets "$pdb" --tunnels-from none -o "$tmp/t"
     expect_success
     [[ -s $tmp/t/tunnels.csv ]] || fail "no tunnels.csv with --tunnels-from none"
+    # Every cycle (1a26A's are all open to a 0.9 A probe) has the length of
+    # the way through it, whatever the starts: report.json has its profile.
+    [[ $(awk -F, '$2 == "cycle" && $8 > 0' "$tmp/t/tunnels.csv" | wc -l) -ge 1 &&
+       $(awk -F, '$2 == "cycle" && $8 == ""' "$tmp/t/tunnels.csv" | wc -l) -eq 0 ]] || fail "a cycle without a way through"
+    [[ $(grep -c '"kind": "cycle"' "$tmp/t/report.json") -eq $(grep -c '^[0-9]*,cycle,' "$tmp/t/tunnels.csv") ]] ||
+      fail "report.json and tunnels.csv differ in cycles"
     ! grep -q ',tunnel,' "$tmp/t/tunnels.csv" || fail "tunnels with --tunnels-from none"
     # A wider probe passes fewer ways: no wider bottleneck than it.
     run pockets "$pdb" --tunnel-probe 1.5 -o "$tmp/t"

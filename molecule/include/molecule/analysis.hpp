@@ -68,7 +68,8 @@ struct Analysis {
   Structure structure;
   PocketSearch search;
   std::vector<std::string> tunnel_starts;  // labels of the starts
-  std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnel_paths)
+  std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnels)
+  std::vector<TunnelPath> cycle_paths;     // the way through each of search.cavities.tunnels (find_tunnels)
   double tunnels_seconds = 0;
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
   std::shared_ptr<const Report> report;  // pocket_report(run()); report_text() is its file

@@ -33,6 +33,12 @@
 //   TunnelOptions::opening_gap of each other), and each pair of openings
 //   at least TunnelOptions::pore_span apart gives the widest path between
 //   them (the cheapest of that bottleneck); pores are merged as tunnels.
+// - A CYCLE of the union of balls (Cavities::tunnels: a ring of atoms with
+//   a hole through it, no start of its own) is crossed through its killing
+//   triangle: from each of the triangle's two nodes the widest way to the
+//   solvent that does not cross it back (the cheapest of that bottleneck),
+//   joined there, from mouth to mouth; a ring with the solvent on both
+//   sides is crossed from node to node.
 //
 // Every edge used has clearance >= TunnelOptions::probe. The centreline is
 // the chain of power-diagram edges a path runs along, sampled every
@@ -47,6 +53,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/geometry.hpp"
+#include "molecule/cavities.hpp"
 #include "molecule/structure.hpp"
 
 namespace molecule {
@@ -82,7 +89,7 @@ struct ProfilePoint {
 };
 
 struct TunnelPath {
-  bool pore = false;             // false: a tunnel from a start
+  bool pore = false;             // false: a tunnel from a start; true: a pore or the way through a cycle
   std::size_t start = 0;         // index of its TunnelStart (tunnels)
   std::vector<alpha::Vec3> centreline;     // the power-diagram edges' chain: nodes and edges' narrowest points
   std::vector<ProfilePoint> profile;
@@ -96,9 +103,19 @@ struct TunnelPath {
   std::vector<alpha::Index> triangles;     // the void-graph edges (Simplices triangle ids) it crosses, in order
 };
 
+struct TunnelNetwork {
+  std::vector<TunnelPath> paths;   // tunnels of each start in order, then the pores by decreasing bottleneck
+  std::vector<TunnelPath> cycles;  // per cycle given, the way through it (no profile: the probe finds none)
+};
+
 // `radii` are the atoms' van der Waals radii (the complex is of the balls
-// r_i + p). Tunnels of each start in order, then the pores by decreasing
-// bottleneck. Throws alpha::Error on inconsistent input.
+// r_i + p); `cycles` the complex's (find_cavities). Throws alpha::Error on
+// inconsistent input.
+TunnelNetwork find_tunnels(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
+                           const std::vector<TunnelStart>& starts, const std::vector<Tunnel>& cycles,
+                           const TunnelOptions& options);
+
+// find_tunnels' paths alone.
 std::vector<TunnelPath> find_tunnel_paths(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
                                           const std::vector<TunnelStart>& starts, const TunnelOptions& options);
 

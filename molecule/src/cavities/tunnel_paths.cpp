@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "alpha/error.hpp"
@@ -138,11 +139,41 @@ public:
     return out;
   }
 
+  // The way through a cycle's killing triangle f (an edge), or nothing
+  // when the probe does not pass it.
+  std::optional<GraphPath> through(Index f) const {
+    if (f == kNone || f >= g_.num_edges() || !(g_.clearance(f) >= opt_.probe)) return std::nullopt;
+    const auto ends = g_.ends(f);
+    GraphPath out;
+    out.start = ends[0];
+    out.cost = alpha::edge_length(g_, f) / std::pow(g_.clearance(f), opt_.cost_exponent);
+    std::vector<Index> after;  // from ends[1] to its mouth
+    for (const int side : {0, 1}) {
+      if (solvent_[ends[side]]) continue;
+      // The search stops at the other end (reached through f, never left).
+      std::vector<bool> stop = solvent_;
+      stop[ends[1 - side]] = true;
+      const Index sources[] = {ends[side]};
+      const alpha::PathTree widest = alpha::widest_paths(g_, sources, stop, opt_.probe);
+      double width = -kInf;
+      for (Index n = 0; n < g_.num_nodes(); ++n)
+        if (solvent_[n] && widest.reached(n)) width = std::max(width, widest.value[n]);
+      if (!(width >= opt_.probe)) return std::nullopt;
+      const GraphPath way = cheapest_to_solvent(sources, alpha::cheapest_paths(g_, sources, cost(width), stop)).front();
+      out.cost += way.cost;
+      if (side == 1) {
+        after = way.edges;
+      } else {  // travelled from its mouth
+        out.edges.assign(way.edges.rbegin(), way.edges.rend());
+        out.start = alpha::path_nodes(g_, ends[0], way.edges).back();
+      }
+    }
+    out.edges.push_back(f);
+    out.edges.insert(out.edges.end(), after.begin(), after.end());
+    return out;
+  }
+
   TunnelPath measure(const GraphPath& p, bool pore) const {
-    TunnelPath out;
-    out.pore = pore;
-    out.cost = p.cost;
-    out.triangles = p.edges;
     // The centreline: node, narrowest point, node, ...; solvent nodes at
     // the ends are left out (a path ends at its mouths).
     std::vector<Vec3> line;
@@ -153,6 +184,21 @@ public:
       at = g_.other_end(p.edges[k], at);
       if (k + 1 < p.edges.size()) line.push_back(g_.position(at));
     }
+    return measure(p, pore, std::move(line));
+  }
+
+  // The way through a cycle: from mouth to mouth, or, a single edge (the
+  // solvent on both sides), from node to node (outside() has no position).
+  TunnelPath measure_cycle(const GraphPath& p) const {
+    if (p.edges.size() > 1) return measure(p, true);
+    return measure(p, true, alpha::path_points(g_, p.start, p.edges));
+  }
+
+  TunnelPath measure(const GraphPath& p, bool pore, std::vector<Vec3> line) const {
+    TunnelPath out;
+    out.pore = pore;
+    out.cost = p.cost;
+    out.triangles = p.edges;
     // The bottleneck: the narrowest of the edges' narrowest points.
     double bottleneck = kInf, where_at = 0;
     Vec3 where{};
@@ -334,23 +380,33 @@ private:
 
 }  // namespace
 
-std::vector<TunnelPath> find_tunnel_paths(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
-                                          const std::vector<TunnelStart>& starts, const TunnelOptions& options) {
+TunnelNetwork find_tunnels(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
+                           const std::vector<TunnelStart>& starts, const std::vector<Tunnel>& cycles,
+                           const TunnelOptions& options) {
   if (radii.size() != ac.triangulation().num_points()) throw alpha::Error("tunnels: one radius per atom needed", alpha::ErrorKind::Misuse);
   if (!(options.probe > 0) || !(options.step > 0)) throw alpha::Error("tunnels: the probe and the step must be positive", alpha::ErrorKind::Misuse);
   TunnelSearch search(ac, radii, options);
-  std::vector<TunnelPath> out;
+  TunnelNetwork out;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const Index s = search.start_node(starts[i]);
     if (s == kNone) continue;
     for (const GraphPath& p : search.tunnels(s)) {
-      out.push_back(search.measure(p, false));
-      out.back().start = i;
+      out.paths.push_back(search.measure(p, false));
+      out.paths.back().start = i;
     }
   }
   if (options.pores)
-    for (const GraphPath& p : search.pores()) out.push_back(search.measure(p, true));
+    for (const GraphPath& p : search.pores()) out.paths.push_back(search.measure(p, true));
+  for (const Tunnel& c : cycles) {
+    const std::optional<GraphPath> p = search.through(c.bottleneck_triangle);
+    out.cycles.push_back(p ? search.measure_cycle(*p) : TunnelPath{});
+  }
   return out;
+}
+
+std::vector<TunnelPath> find_tunnel_paths(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
+                                          const std::vector<TunnelStart>& starts, const TunnelOptions& options) {
+  return find_tunnels(ac, radii, starts, {}, options).paths;
 }
 
 }  // namespace molecule

@@ -169,6 +169,12 @@ json site_list(const PocketRun& run, const json& ligands) {
 
 std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
 
+// The way through cycle k, or null when none was found.
+const TunnelPath* cycle_path(const PocketRun& run, std::size_t k) {
+  if (!run.cycle_paths || k >= run.cycle_paths->size() || (*run.cycle_paths)[k].profile.empty()) return nullptr;
+  return &(*run.cycle_paths)[k];
+}
+
 json profile_of(const TunnelPath& p) {
   json out = json::array();
   for (const ProfilePoint& q : p.profile) out.push_back({length(q.x.x), length(q.x.y), length(q.x.z), length(q.radius)});
@@ -195,10 +201,11 @@ json tunnel_list(const PocketRun& run) {
                   {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
                   {"lining_residues", lining_residues(atoms, t.lining_atoms)}};
     const std::size_t through = path_through(run, t);
-    if (through != std::size_t(-1)) {
-      entry["length"] = length((*run.paths)[through].length);
-      entry["path"] = cycles + through + 1;
-      entry["profile"] = profile_of((*run.paths)[through]);
+    if (through != std::size_t(-1)) entry["path"] = cycles + through + 1;
+    const TunnelPath* way = cycle_path(run, rank - 1);
+    if (way) {
+      entry["length"] = length(way->length);
+      entry["profile"] = profile_of(*way);
     }
     out.push_back(std::move(entry));
   }

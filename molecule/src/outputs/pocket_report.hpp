@@ -36,8 +36,11 @@ struct PocketRun {
   std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
   double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
   std::string radii = std::string(kRadiusTable);  // the radius table, or the --radii file
-  // Tunnels and pores (find_tunnel_paths); null: none computed.
+  // Tunnels and pores (find_tunnels); null: none computed.
   const std::vector<TunnelPath>* paths = nullptr;
+  // The way through each cycle of search->cavities.tunnels (find_tunnels);
+  // null: none computed.
+  const std::vector<TunnelPath>* cycle_paths = nullptr;
   std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
   std::string tunnels_from = "auto";
   TunnelOptions tunnel_options;

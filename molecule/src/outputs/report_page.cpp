@@ -168,8 +168,15 @@ json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std
   for (const SceneCavity& c : scene.cavities) {
     if (c.site_rank == 0) continue;
     const std::string color = hex(c.color), name = "site " + std::to_string(c.site_rank) + " (" + c.name + ")";
-    if (c.shown) parts.push_back(drawn(atom_selector(whole_residues(c.lining_ids)), "ball_and_stick", color, 1, name));
+    // refs name the site's nodes for report.js, which fades the other sites while one is focused.
+    const std::string ref = "site-" + std::to_string(c.site_rank);
+    if (c.shown) {
+      json lining = drawn(atom_selector(whole_residues(c.lining_ids)), "ball_and_stick", color, 1, name);
+      lining["ref"] = ref + "-lining";
+      parts.push_back(std::move(lining));
+    }
     json group = node("primitives", {{"color", color}, {"opacity", c.site_rank == 1 ? 0.9 : 0.6}, {"tooltip", name}});
+    group["ref"] = ref;
     json& shapes = group["children"] = json::array();
     const bool is_void = c.name.rfind("void_", 0) == 0;
     const std::size_t index = std::stoul(c.name.substr(c.name.find('_') + 1)) - 1;
@@ -188,6 +195,7 @@ json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std
   for (json& s : spaces) top.push_back(std::move(s));
   for (const ScenePath& p : scene.paths) {
     json group = node("primitives", {{"color", hex(p.color)}, {"opacity", 0.7}, {"tooltip", p.name}});
+    group["ref"] = "path-" + p.name.substr(p.name.find('_') + 1);  // hidden while a site is focused
     json& shapes = group["children"] = json::array();
     for (const SinkSphere& s : p.spheres) shapes.push_back(sphere(s, hex(p.color)));
     if (!shapes.empty()) top.push_back(std::move(group));

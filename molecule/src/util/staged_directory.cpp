@@ -113,8 +113,7 @@ void StagedDirectory::copy(const std::string& file, const fs::path& source) {
   const auto lock = hold();
   const fs::path path = made_path(sibling_, file, name_);
   std::error_code ec;
-  fs::create_hard_link(source, path, ec);
-  if (ec) fs::copy_file(source, path, ec);
+  fs::copy_file(source, path, ec);
   if (ec)
     alpha::fail(name_ + ": cannot copy " + source.string() + " to " + path.string() + ": " + ec.message(),
                 alpha::ErrorKind::BadInput);

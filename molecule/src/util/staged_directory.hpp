@@ -37,9 +37,9 @@ public:
   // A file of the new directory; `file` is relative and may name one
   // subdirectory ("meshes/pocket_1.ply"), created as needed.
   void write(const std::string& file, std::string_view content);
-  // A file of the new directory with `source`'s content: a hard link to it
-  // (no copy of its bytes: Mol*'s 5 MB would cost pockets a third of its
-  // time), or a copy where a link cannot be made (another file system).
+  // A file of the new directory with `source`'s content: a copy, never a
+  // link (an edit of the output in place must not change the source, e.g.
+  // the installed Mol*; the kernel copies, about 5 ms for Mol*'s 5 MB).
   void copy(const std::string& file, const std::filesystem::path& source);
   // Puts the new directory in place of the target and removes the
   // earlier one.
