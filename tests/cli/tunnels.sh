@@ -50,8 +50,15 @@ case "$case_name" in
     # the way through it, whatever the starts: report.json has its profile.
     [[ $(awk -F, '$2 == "cycle" && $8 > 0' "$tmp/t/tunnels.csv" | wc -l) -ge 1 &&
        $(awk -F, '$2 == "cycle" && $8 == ""' "$tmp/t/tunnels.csv" | wc -l) -eq 0 ]] || fail "a cycle without a way through"
-    [[ $(grep -c '"kind": "cycle"' "$tmp/t/report.json") -eq $(grep -c '^[0-9]*,cycle,' "$tmp/t/tunnels.csv") ]] ||
-      fail "report.json and tunnels.csv differ in cycles"
+    cycles=$(grep -c '^[0-9]*,cycle,' "$tmp/t/tunnels.csv")
+    [[ $(grep -c '"kind": "cycle"' "$tmp/t/report.json") -eq $cycles ]] || fail "report.json and tunnels.csv differ in cycles"
+    # ... its points in tunnel_profiles.csv (ranks 1..cycles) and in
+    # tunnels.pdb (chain C), one atom per row.
+    [[ $(awk -F, -v c="$cycles" 'NR > 1 && $1 <= c { print $1 }' "$tmp/t/tunnel_profiles.csv" | sort -u | wc -l) -eq $cycles ]] ||
+      fail "not every cycle in tunnel_profiles.csv"
+    [[ $(grep -c '^HETATM.* TUN TUN C' "$tmp/t/tunnels.pdb") -eq \
+       $(awk -F, -v c="$cycles" 'NR > 1 && $1 <= c' "$tmp/t/tunnel_profiles.csv" | wc -l) ]] ||
+      fail "tunnels.pdb's chain C and tunnel_profiles.csv's cycles differ"
     ! grep -q ',tunnel,' "$tmp/t/tunnels.csv" || fail "tunnels with --tunnels-from none"
     # A wider probe passes fewer ways: no wider bottleneck than it.
     run pockets "$pdb" --tunnel-probe 1.5 -o "$tmp/t"

@@ -187,7 +187,8 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   if (selection_.tunnels && run.paths) {
     files.emplace_back("tunnels.csv", tunnels_csv(run));
     files.emplace_back("tunnel_profiles.csv", tunnel_profiles_csv(run));
-    PocketPdb tunnels = tunnel_pdb(*run.paths, cavities.tunnels.size() + 1,
+    const std::vector<TunnelPath> no_ways(cavities.tunnels.size());
+    PocketPdb tunnels = tunnel_pdb(run.cycle_paths ? *run.cycle_paths : no_ways, *run.paths,
                                    "alphapocket " + run.version + " tunnels of " + run.file);
     if (tunnels.left_out > 0)
       warnings_.push_back("tunnels.pdb: " + std::to_string(tunnels.left_out) +

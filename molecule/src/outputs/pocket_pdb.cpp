@@ -98,15 +98,18 @@ PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, co
                    "chain T = tunnels, atom BTN = bottleneck centre (B = its radius, A)"});
 }
 
-PocketPdb tunnel_pdb(const std::vector<TunnelPath>& paths, std::size_t first_rank, const std::string& title) {
+PocketPdb tunnel_pdb(const std::vector<TunnelPath>& cycles, const std::vector<TunnelPath>& paths,
+                     const std::string& title) {
   HetatmWriter pdb("TUN");
+  for (std::size_t i = 0; i < cycles.size(); ++i)
+    for (const ProfilePoint& q : cycles[i].profile) pdb.hetatm(" TUN", 'C', i + 1, q.x, q.radius);
   for (std::size_t i = 0; i < paths.size(); ++i)
     for (const ProfilePoint& q : paths[i].profile)
-      pdb.hetatm(" TUN", paths[i].pore ? 'P' : 'T', first_rank + i, q.x, q.radius);
+      pdb.hetatm(" TUN", paths[i].pore ? 'P' : 'T', cycles.size() + i + 1, q.x, q.radius);
   return pdb_file(pdb, title,
-                  {"tunnel (chain T) and pore (chain P) centrelines: residue TUN, residue",
-                   "number = the tunnel's rank in report.json, one atom per profile point,",
-                   "B = the radius there, A"});
+                  {"centrelines of the ways through cycles (chain C), tunnels (chain T)",
+                   "and pores (chain P): residue TUN, residue number = the rank in",
+                   "report.json, one atom per profile point, B = the radius there, A"});
 }
 
 }  // namespace molecule

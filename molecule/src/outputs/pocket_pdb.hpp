@@ -45,10 +45,12 @@ std::vector<SinkSphere> sink_spheres(const alpha::AlphaComplex& ac, const Cavity
 // newline in a file name cannot start a record).
 PocketPdb pocket_pdb(const alpha::AlphaComplex& ac, const Cavities& cavities, const std::string& title);
 
-// tunnels.pdb: one pseudo-atom TUN per profile point of each path (residue
-// TUN, chain T for tunnels and P for pores, residue number = first_rank +
-// its index: its rank in report.json), B-factor = the radius there (the
-// HOLE and CAVER convention, read by ChimeraX, VMD and PyMOL).
-PocketPdb tunnel_pdb(const std::vector<TunnelPath>& paths, std::size_t first_rank, const std::string& title);
+// tunnels.pdb: one pseudo-atom TUN per profile point of the way through
+// each cycle (chain C) and of each tunnel (T) and pore (P) after them
+// (residue TUN, residue number = its rank in report.json: the cycles
+// 1..cycles.size(), then the paths), B-factor = the radius there (the HOLE
+// and CAVER convention, read by ChimeraX, VMD and PyMOL).
+PocketPdb tunnel_pdb(const std::vector<TunnelPath>& cycles, const std::vector<TunnelPath>& paths,
+                     const std::string& title);
 
 }  // namespace molecule

@@ -380,13 +380,17 @@ std::string tunnels_csv(const PocketRun& run) {
 
 std::string tunnel_profiles_csv(const PocketRun& run) {
   std::string out = "tunnel,distance,x,y,z,radius\n";
-  const std::size_t cycles = run.search->cavities.tunnels.size();
-  for (std::size_t i = 0; i < num_paths(run); ++i)
-    for (const ProfilePoint& q : (*run.paths)[i].profile) {
-      out += std::to_string(cycles + i + 1);
+  const auto rows = [&](std::size_t rank, const TunnelPath& p) {
+    for (const ProfilePoint& q : p.profile) {
+      out += std::to_string(rank);
       for (const double x : {q.distance, q.x.x, q.x.y, q.x.z, q.radius}) out += ',' + csv_number(length(x));
       out += '\n';
     }
+  };
+  const std::size_t cycles = run.search->cavities.tunnels.size();
+  for (std::size_t k = 0; k < cycles; ++k)
+    if (const TunnelPath* way = cycle_path(run, k)) rows(k + 1, *way);
+  for (std::size_t i = 0; i < num_paths(run); ++i) rows(cycles + i + 1, (*run.paths)[i]);
   return out;
 }
 

@@ -68,7 +68,7 @@ std::string report_file_text(const nlohmann::ordered_json& report);
 std::string pockets_csv(const PocketRun& run);
 // tunnels.csv (one row per entry of report.json's tunnels) and
 // tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,
-// one row per profile point of each tunnel and pore).
+// one row per profile point of each cycle's way through, tunnel and pore).
 std::string tunnels_csv(const PocketRun& run);
 std::string tunnel_profiles_csv(const PocketRun& run);
 // The index into *run.paths of the first path that runs through a cycle's
