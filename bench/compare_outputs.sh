@@ -6,7 +6,7 @@
 # tests/data and examples/data, ../shared/data/pockets-dev and formats/
 # (`pockets` with every output, `--pores`, `--json`; `surface --per-atom`)
 # and the point files of tests/data (`persistence`, `spectrum`,
-# `delaunay`, `shape`).
+# `delaunay`, `shape`); `track` over the CHK1 and 1l2y ensembles.
 #
 # Usage: bench/compare_outputs.sh REF_ALPHAPOCKET NEW_ALPHAPOCKET [FILE...]
 #   FILE...  structures to use instead of the default set
@@ -66,5 +66,11 @@ for f in "$root"/tests/data/*.xyz; do
   same "delaunay $b" delaunay "$f" --json
   same "shape $b" shape "$f" --alpha-sq 1 -o OUT.off
 done
+if ((!$#)); then
+  # track over ensembles: ten CHK1 structures (one thread) and an NMR file's models.
+  chk1=("$shared"/data/ensembles/chk1_mdpocket/[0-9]*.pdb)
+  [[ -f ${chk1[0]} ]] && same "track chk1_mdpocket" track "${chk1[@]}" -j 1 -o OUT
+  [[ -f $shared/data/formats/1l2y.pdb ]] && same "track 1l2y" track "$shared/data/formats/1l2y.pdb" -o OUT
+fi
 echo "$runs runs, $differences different"
 ((differences == 0))

@@ -73,7 +73,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     a.paths = std::move(network.paths);
     a.cycle_paths = std::move(network.cycles);
     a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
+    if (options.report) a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
   } catch (const AnalysisError&) {
     throw;
   } catch (const StructureError& e) {

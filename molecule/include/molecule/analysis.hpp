@@ -59,6 +59,7 @@ struct AnalysisOptions {
   TunnelOptions tunnels;            // --tunnel-probe, --pores
   SiteRanking ranking = SiteRanking::probability;
   double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A
+  bool report = true;  // Analysis::report made (track reads the search, not the report)
 };
 
 // Everything one structure produced; owns all of it.
@@ -72,7 +73,7 @@ struct Analysis {
   std::vector<TunnelPath> cycle_paths;     // the way through each of search.cavities.tunnels (find_tunnels)
   double tunnels_seconds = 0;
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
-  std::shared_ptr<const Report> report;  // pocket_report(run()); report_text() is its file
+  std::shared_ptr<const Report> report;  // pocket_report(run()) if options.report; report_text() is its file
 
   // The writers' view of it (pocket_report.hpp; borrows from *this: keep
   // *this alive and in place).

@@ -77,7 +77,12 @@ void BuriedSurface::sample(const std::vector<char>& sampled) {
         const Vec3 d = p - o.first;
         return dot(d, d) < o.second;
       };
-      if (std::any_of(overlapping.begin(), overlapping.end(), inside)) continue;
+      // A sphere that held a point is tried first for the next ones (it
+      // mostly holds them too; the answer does not depend on the order).
+      if (const auto o = std::find_if(overlapping.begin(), overlapping.end(), inside); o != overlapping.end()) {
+        std::iter_swap(overlapping.begin(), o);
+        continue;
+      }
       const auto cube = [&](double v) { return std::int64_t(std::floor(v / kSurfacePointSpacing)); };
       kept.emplace_back(std::array<std::int64_t, 3>{cube(p.x), cube(p.y), cube(p.z)}, kept.size(), p);
     }

@@ -28,6 +28,7 @@ TrackResult track(FrameSource& frames, const TrackOptions& options, const std::f
   result.transient = options.transient;
   PocketTracker tracker(options.min_lining_overlap);
   AnalysisOptions analysis = options.analysis;
+  analysis.report = false;
   const unsigned jobs = std::max(1u, options.jobs);
   if (jobs > 1) analysis.cavities.threads = 1;  // the frames are the threads' work
   std::vector<std::uint32_t> in_cavity, density;

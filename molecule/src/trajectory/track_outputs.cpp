@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -132,8 +133,15 @@ std::string opendx(const SpaceGrid& g, const std::vector<float>& values, const s
       "object 3 class array type double rank 0 items {} data follows\n",
       title, g.nx, g.ny, g.nz, g.origin.x, g.origin.y, g.origin.z, g.spacing, g.spacing, g.spacing, g.nx, g.ny, g.nz,
       values.size());
-  for (std::size_t p = 0; p < values.size(); ++p)
-    out += fmt::format("{:g}{}", values[p], p % 3 == 2 || p + 1 == values.size() ? "\n" : " ");
+  // Most points lie in no cavity: their 0 is written without formatting.
+  out.reserve(out.size() + 2 * values.size());
+  for (std::size_t p = 0; p < values.size(); ++p) {
+    if (values[p] == 0 && !std::signbit(values[p]))
+      out += '0';
+    else
+      fmt::format_to(std::back_inserter(out), "{:g}", values[p]);
+    out += p % 3 == 2 || p + 1 == values.size() ? '\n' : ' ';
+  }
   return out + fmt::format(
                    "attribute \"dep\" string \"positions\"\nobject \"{}\" class field\n"
                    "component \"positions\" value 1\ncomponent \"connections\" value 2\ncomponent \"data\" value 3\n",
