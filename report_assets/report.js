@@ -153,7 +153,6 @@
   const mvs = JSON.parse(JSON.stringify(data.mvs));
   for (const n of mvs.root.children)
     if (n.kind === 'download') n.params.url = 'data:text/plain;charset=utf-8,' + encodeURIComponent(data.structure) + '#structure.cif';
-  delete mvs.metadata.title;  // no snapshot title over the view
 
   window.alphapocket = { data, ready: false, focused: null };
   molstar.Viewer.create('viewer', {
@@ -163,6 +162,10 @@
     collapseLeftPanel: true, pixelScale: 1,
   }).then(async v => {
     await v.loadMvsData(JSON.stringify(mvs), 'mvsj');
+    // Mol* keeps the scene as a list of one state snapshot and draws a
+    // snapshot switcher and title over the view while the list is not empty;
+    // the scene stays applied when the list is emptied.
+    v.plugin.managers.snapshot.clear();
     const camera = v.plugin.canvas3d.camera;
     window.alphapocket.viewer = v;
     // The sites' and tunnels' drawn parts: the representations under the

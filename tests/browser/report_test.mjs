@@ -7,8 +7,9 @@
 //
 //   page_1a26A  the page opened from file:// after OUTDIR was moved, every
 //               request that is not file: or data: refused (and counted):
-//               no console error, no page error, no such request; the
-//               viewer's canvas shows the structure (non-white pixels); the
+//               no console error, no page error, no such request; no
+//               Mol* snapshot control over the view; the viewer's canvas
+//               shows the structure (non-white pixels); the
 //               sites table has one row per site of report.json; clicking
 //               row 2 points the camera at site 2's centre, fades the
 //               other sites in the viewer's state (spaces faded, residues
@@ -123,6 +124,11 @@ try {
   if (remote.length) fail('requests left the machine: ' + remote.join(' '));
   if (problems.length) fail(problems.join('; '));
   if (!(await page.evaluate('window.alphapocket.ready'))) fail('the viewer did not load');
+  // Mol*'s state-snapshot control ("[1/1] <date>" and a play button) and
+  // snapshot title over the view: the page's scene is a single state.
+  const snapshotUi = await page.$$eval('#viewer .msp-state-snapshot-viewport-controls, #viewer .msp-snapshot-description-wrapper',
+                                       es => es.map(e => e.className));
+  if (snapshotUi.length) fail('Mol*\'s snapshot controls are over the view: ' + snapshotUi.join(' '));
 
   const rows = await page.$$eval('#sites tbody tr', trs => trs.length);
   if (rows !== report.sites.length) fail(`${rows} rows in the sites table, report.json has ${report.sites.length} sites`);
