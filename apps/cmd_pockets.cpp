@@ -37,8 +37,10 @@
 #include "util/atomic_file.hpp"
 #include "ranking/buried_surface.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/ligand_sites.hpp"
 #include "outputs/pocket_outputs.hpp"
 #include "outputs/pocket_report.hpp"
+#include "outputs/report_numbers.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/residues.hpp"
 #include "molecule/site_features.hpp"
@@ -141,44 +143,43 @@ void print_paths(const molecule::Analysis& a) {
   }
 }
 
-// One line per hetero group (report.json ligands[]), the ones in a site
-// first by site rank, then the others in file order; at most kSummaryRows.
+// One line per hetero group (Analysis::ligands), the ones in a site first
+// by site rank, then the others in file order; at most kSummaryRows.
 void print_ligands(const molecule::Analysis& a) {
-  using json = nlohmann::ordered_json;
-  const json& ligands = a.report->json.at("ligands");
-  const json& sites = a.report->json.at("sites");
-  std::vector<const json*> order;
-  for (const json& l : ligands) order.push_back(&l);
-  std::stable_sort(order.begin(), order.end(), [](const json* x, const json* y) {
-    const auto key = [](const json* l) { return l->at("site").is_null() ? std::size_t(-1) : l->at("site").get<std::size_t>(); };
+  std::vector<const molecule::LigandSite*> order;
+  for (const molecule::LigandSite& l : a.ligands) order.push_back(&l);
+  std::stable_sort(order.begin(), order.end(), [](const molecule::LigandSite* x, const molecule::LigandSite* y) {
+    const auto key = [](const molecule::LigandSite* l) { return l->site ? l->site : std::size_t(-1); };
     return key(x) < key(y);
   });
-  const auto site_name = [&](const json& rank) {
-    const json& s = sites.at(rank.get<std::size_t>() - 1);
-    return "site " + rank.dump() + " (" + s.at("kind").get<std::string>() + " " + s.at("cavity_rank").dump() + ")";
+  const auto site_name = [&](std::size_t rank) {
+    const molecule::Site& s = a.search.cavities.sites.at(rank - 1);
+    return "site " + std::to_string(rank) + " (" + (s.is_void ? "void " : "pocket ") + std::to_string(s.index + 1) + ")";
+  };
+  // As report.json has it.
+  const auto distance = [](const molecule::LigandSite& l) {
+    return fmt::format("{:.1f}", molecule::report_number::length(l.distance));
   };
   // "; 14 in site 9": the other sites holding some of it.
-  const auto elsewhere = [](const json& l) {
+  const auto elsewhere = [](const molecule::LigandSite& l) {
     std::string more;
-    for (const json& h : l.at("in_sites"))
-      if (h.at("site") != l.at("site")) more += "; " + h.at("atoms").dump() + " in site " + h.at("site").dump();
+    for (const auto& [rank, atoms] : l.holding)
+      if (rank != l.site) more += "; " + std::to_string(atoms) + " in site " + std::to_string(rank);
     return more;
   };
   if (!order.empty()) std::printf("\n");
   for (std::size_t i = 0; i < std::min(order.size(), kSummaryRows); ++i) {
-    const json& l = *order[i];
-    const std::string name = l.at("name").get<std::string>() + " " + l.at("chain").get<std::string>() + ":" +
-                             l.at("number").dump() + l.at("insertion_code").get<std::string>();
+    const molecule::LigandSite& l = *order[i];
+    const molecule::HeteroGroup& g = a.structure.hetero_groups.at(l.group);
+    const std::string name = g.residue_name + " " + g.chain + ":" + std::to_string(g.seq_num) + molecule::icode_text(g.icode);
     std::string where;
-    if (l.at("kept") == true)
-      where = "kept as protein, " + (l.at("site").is_null() ? std::string("lines no site") : "lines " + site_name(l.at("site")));
-    else if (!l.at("site").is_null())
-      where = "in " + site_name(l.at("site")) + ", " + fmt::format("{:.1f}", l.at("distance").get<double>()) + " A: " +
-              l.at("atoms_in_site").dump() + " of " + l.at("heavy_atoms").dump() + " heavy atoms inside its space" +
-              elsewhere(l);
-    else if (!l.at("nearest_site").is_null())
-      where = "in no site: nearest " + site_name(l.at("nearest_site")) + " at " +
-              fmt::format("{:.1f}", l.at("distance").get<double>()) + " A";
+    if (g.kept)
+      where = "kept as protein, " + (l.site ? "lines " + site_name(l.site) : std::string("lines no site"));
+    else if (l.site)
+      where = "in " + site_name(l.site) + ", " + distance(l) + " A: " + std::to_string(l.atoms_in_site) + " of " +
+              std::to_string(g.atoms.size()) + " heavy atoms inside its space" + elsewhere(l);
+    else if (l.nearest_site)
+      where = "in no site: nearest " + site_name(l.nearest_site) + " at " + distance(l) + " A";
     else
       where = "in no site";
     std::printf("ligand %s %s\n", name.c_str(), where.c_str());

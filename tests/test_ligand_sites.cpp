@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Where hetero groups lie among the binding sites (ranking/ligand_sites.hpp)
+// Where hetero groups lie among the binding sites (molecule/ligand_sites.hpp)
 // against brute force: every heavy atom against every cell of every site,
 // inside by barycentric coordinates, outside by the distance to each face
 // computed from its plane and edges; no pruning.
@@ -12,7 +12,7 @@
 #include <limits>
 #include <string>
 
-#include "ranking/ligand_sites.hpp"
+#include "molecule/ligand_sites.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "mesh_checks.hpp"

@@ -26,6 +26,7 @@
 #include "outputs/pocket_colors.hpp"
 #include "outputs/pocket_outputs.hpp"
 #include "outputs/pocket_report.hpp"
+#include "molecule/ligand_sites.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "outputs/structure_copy.hpp"
@@ -46,15 +47,20 @@ struct Run {
   TempDir dir;
   molecule::Structure structure;
   molecule::PocketSearch search;
+  std::vector<molecule::LigandSite> ligands;
   molecule::PocketRun run;
   std::vector<std::string> written;
   json report;
 
-  Run() : structure(molecule::read_structure(kStructure)), search(molecule::search_pockets(structure, {})) {
+  Run()
+      : structure(molecule::read_structure(kStructure)),
+        search(molecule::search_pockets(structure, {})),
+        ligands(molecule::ligand_sites(structure, search)) {
     run.file = kStructure;
     run.structure = &structure;
     run.version = "test";
     run.search = &search;
+    run.ligands = &ligands;
     run.mesh_format = "ply";
     molecule::PocketOutputDir out((dir / "out").string());
     written = out.write(run);
@@ -562,7 +568,47 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
   CHECK(residues[0]["insertion_code"] == "");
   CHECK(residues[2]["number"] == -3);
   CHECK(report["pockets"][0].count("mesh") == 0);  // no mesh format: no meshes
+}
 
+TEST_CASE("pockets outputs: the ligands' sites are the run's, one per hetero group", "[pocket_outputs]") {
+  const Run& r = the_run();
+  REQUIRE(r.structure.hetero_groups.size() == r.ligands.size());
+  REQUIRE(!r.ligands.empty());
+  // Hand-made sites for each group: report.json writes what it is given.
+  std::vector<molecule::LigandSite> ligands = r.ligands;
+  for (molecule::LigandSite& l : ligands) {
+    l.site = l.nearest_site = 2;
+    l.distance = 1.23456;
+    l.atoms_in_site = 1;
+    l.holding = {{1, 3}, {2, 1}};
+  }
+  molecule::PocketRun run = r.run;
+  run.ligands = &ligands;
+  const json report = molecule::pocket_report(run);
+  REQUIRE(report["ligands"].size() == ligands.size());
+  const molecule::HeteroGroup& g = r.structure.hetero_groups[0];
+  CHECK(report["ligands"][0]["site"] == 2);
+  CHECK(report["ligands"][0]["atoms_in_site"] == 1);
+  CHECK(report["ligands"][0]["in_sites"][0]["atoms"] == 3);
+  if (!g.kept) CHECK(report["ligands"][0]["distance"] == 1.235);
+  // Every site a group lies in lists it, no other.
+  for (std::size_t rank = 1; rank <= report["sites"].size(); ++rank)
+    CHECK(report["sites"][rank - 1]["ligands"].size() == (rank <= 2 ? ligands.size() : 0));
+
+  // A run without them, or with a number other than the groups', is a caller's bug.
+  const auto kind = [&] {
+    try {
+      molecule::pocket_report(run);
+    } catch (const alpha::Error& e) {
+      return e.kind();
+    }
+    return alpha::ErrorKind::Internal;  // not thrown
+  };
+  run.ligands = nullptr;
+  CHECK(kind() == alpha::ErrorKind::Misuse);
+  ligands.pop_back();
+  run.ligands = &ligands;
+  CHECK(kind() == alpha::ErrorKind::Misuse);
 }
 
 TEST_CASE("pockets outputs: structure.cif quotes CIF reserved words and keeps printf's digits", "[pocket_outputs]") {
@@ -712,9 +758,11 @@ TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot h
   molecule::Structure far = r.structure;
   for (molecule::Atom& a : far.atoms) a.position.x += 20000;
   const molecule::PocketSearch search = molecule::search_pockets(far, {});
+  const std::vector<molecule::LigandSite> ligands = molecule::ligand_sites(far, search);
   molecule::PocketRun run = r.run;
   run.structure = &far;
   run.search = &search;
+  run.ligands = &ligands;
   TempDir dir;
   molecule::PocketOutputDir out((dir / "out").string());
   out.write(run);

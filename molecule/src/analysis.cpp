@@ -19,6 +19,7 @@ PocketRun Analysis::run() const {
   r.options = options.cavities;
   r.version = options.version;
   r.search = &search;
+  r.ligands = &ligands;
   r.mesh_format = options.outputs.meshes ? options.mesh_format : "";
   r.mesh_resolution = options.mesh_resolution;
   r.min_plddt = options.structure.min_plddt;
@@ -58,6 +59,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     } catch (const alpha::Error& e) {
       throw AnalysisError(e.kind(), alpha::in_file(file, e).what());  // e.g. all atoms in one plane
     }
+    a.ligands = ligand_sites(a.structure, a.search);
     const auto start = std::chrono::steady_clock::now();
     std::vector<TunnelStart> starts;
     try {

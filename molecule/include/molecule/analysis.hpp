@@ -18,6 +18,7 @@
 #include "alpha/error.hpp"
 #include "alphapocket/version.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/ligand_sites.hpp"
 #include "molecule/output_selection.hpp"
 #include "molecule/pocket_meshes.hpp"
 #include "molecule/pocket_search.hpp"
@@ -68,6 +69,7 @@ struct Analysis {
   AnalysisOptions options;
   Structure structure;
   PocketSearch search;
+  std::vector<LigandSite> ligands;  // where each hetero group lies (ligand_sites), by Structure::hetero_groups
   std::vector<std::string> tunnel_starts;  // labels of the starts
   std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnels)
   std::vector<TunnelPath> cycle_paths;     // the way through each of search.cavities.tunnels (find_tunnels)

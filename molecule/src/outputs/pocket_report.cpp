@@ -3,31 +3,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <span>
 
 #include "alpha/error.hpp"
 #include "molecule/residues.hpp"
+#include "outputs/report_numbers.hpp"
 #include "outputs/tables.hpp"
-#include "ranking/ligand_sites.hpp"
+#include "molecule/ligand_sites.hpp"
 
 namespace molecule {
 namespace {
 
 using json = nlohmann::ordered_json;  // keys in the documented order
 
-double rounded(double x, double scale) {
-  const double r = std::round(x * scale) / scale;
-  return r == 0 ? 0.0 : r;  // no -0 in the output
-}
-double length(double x) { return rounded(x, 1e3); }  // also areas and volumes
-// Scores span many decades (burial enters to the 12th power): 4
-// significant digits, so that small molecules' scores do not all read 0.
-double score(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", x);
-  return std::strtod(text, nullptr) + 0.0;  // + 0.0: no -0
-}
+using report_number::length;
+using report_number::score;
 
 std::vector<alpha::Index> all_atoms(std::size_t n) {
   std::vector<alpha::Index> out(n);
@@ -36,7 +26,7 @@ std::vector<alpha::Index> all_atoms(std::size_t n) {
 }
 
 // Probabilities to 4 decimals; null where none was computed (find_cavities alone).
-json probability(double p) { return std::isnan(p) ? json() : json(rounded(p, 1e4)); }
+json probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
 
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
@@ -115,10 +105,20 @@ json holding(const LigandSite& l) {
   return out;
 }
 
-// Every hetero group with the site that holds it (ranking/ligand_sites.hpp).
-json ligand_list(const PocketRun& run, const std::vector<LigandSite>& where) {
+// The run's ligand sites; a structure with hetero groups must have them.
+std::span<const LigandSite> ligands_of(const PocketRun& run) {
+  const std::span<const LigandSite> ligands = run.ligands ? std::span(*run.ligands) : std::span<const LigandSite>();
+  if (ligands.size() != run.structure->hetero_groups.size())
+    alpha::fail("pocket_report: " + std::to_string(ligands.size()) + " ligand sites for " +
+                    std::to_string(run.structure->hetero_groups.size()) + " hetero groups",
+                alpha::ErrorKind::Misuse);
+  return ligands;
+}
+
+// Every hetero group with the site that holds it (molecule/ligand_sites.hpp).
+json ligand_list(const PocketRun& run) {
   json out = json::array();
-  for (const LigandSite& l : where) {
+  for (const LigandSite& l : ligands_of(run)) {
     const HeteroGroup& g = run.structure->hetero_groups.at(l.group);
     const auto rank = [](std::size_t r) { return r ? json(r) : json(nullptr); };
     out.push_back({{"id", ligand_id(g)},
@@ -140,7 +140,7 @@ json ligand_list(const PocketRun& run, const std::vector<LigandSite>& where) {
 // The binding-site ranking: which pocket or void each site is (its rank in
 // that list), with the score, centre and lining residues repeated for
 // scripts, and the ids of the hetero groups it holds.
-json site_list(const PocketRun& run, const json& ligands) {
+json site_list(const PocketRun& run) {
   const Cavities& cavities = run.search->cavities;
   json out = json::array();
   std::size_t rank = 0;
@@ -148,11 +148,8 @@ json site_list(const PocketRun& run, const json& ligands) {
     const Cavity& c = cavities.cavity(s);
     json held = json::array();
     ++rank;
-    for (const json& l : ligands) {
-      bool in = l["site"] == rank;
-      for (const json& h : l["in_sites"]) in = in || h["site"] == rank;
-      if (in) held.push_back(l["id"]);
-    }
+    for (const LigandSite& l : ligands_of(run))
+      if (l.lies_in(rank)) held.push_back(ligand_id(run.structure->hetero_groups[l.group]));
     out.push_back({{"rank", rank},
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},
@@ -292,7 +289,6 @@ json pocket_report(const PocketRun& run) {
                    {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))},
                    {"tunnel_paths", num_paths(run)}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
-  const json ligands = ligand_list(run, ligand_sites(*run.structure, *run.search));
   return {
       {"alphapocket", run.version},
       {"input", std::move(input)},
@@ -300,8 +296,8 @@ json pocket_report(const PocketRun& run) {
       {"molecule", std::move(molecule)},
       {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
       {"voids", cavity_list(run, run.search->cavities.voids, "void")},
-      {"sites", site_list(run, ligands)},
-      {"ligands", ligands},
+      {"sites", site_list(run)},
+      {"ligands", ligand_list(run)},
       {"tunnels", tunnel_list(run)},
   };
 }
@@ -324,7 +320,7 @@ std::string pockets_csv(const PocketRun& run) {
       names += residue_id(atoms[i]);
     }
     out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' +
-           (std::isnan(c.probability) ? std::string() : csv_number(rounded(c.probability, 1e4)));
+           (std::isnan(c.probability) ? std::string() : csv_number(report_number::probability(c.probability)));
     for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
                            length(c.ms_area)})
       out += ',' + csv_number(x);

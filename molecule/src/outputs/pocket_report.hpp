@@ -16,6 +16,7 @@
 
 #include "alpha/geometry.hpp"
 #include "molecule/cavities.hpp"
+#include "molecule/ligand_sites.hpp"
 #include "molecule/pocket_meshes.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/radii.hpp"
@@ -33,6 +34,9 @@ struct PocketRun {
   CavityOptions options;
   std::string version;  // of alphapocket
   const PocketSearch* search = nullptr;
+  // Where each hetero group lies (ligand_sites): one per group of
+  // structure->hetero_groups; null when the structure has none.
+  const std::vector<LigandSite>* ligands = nullptr;
   std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
   double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
   std::string radii = std::string(kRadiusTable);  // the radius table, or the --radii file

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ranking/ligand_sites.hpp"
+#include "molecule/ligand_sites.hpp"
 
 #include <algorithm>
 #include <array>

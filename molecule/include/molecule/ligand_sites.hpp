@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Where the hetero groups of a structure (ligands, ions, cofactors) lie
-// among its binding sites (Cavities::sites), for report.json's ligands[]
-// and the summary ("ligand CNA A:200 in site 1").
+// among its binding sites (Cavities::sites): molecule::analyse finds them
+// (Analysis::ligands) for report.json's ligands[], the sites' ligands in
+// report.json and sites.csv, and the summary ("ligand CNA A:200 in site 1").
 //
 // A site's SPACE is the union of its cavity's empty tetrahedra (the cells
 // of Cavity::cells, spanned by atom centres): the free space the search
@@ -18,6 +19,7 @@
 // site is the best-ranked site it lines (one of its atoms among the site's
 // lining atoms), if any.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -39,6 +41,11 @@ struct LigandSite {
   std::size_t atoms_in_site = 0; // heavy atoms inside the site's space (kept: among its lining atoms)
   // Dropped groups: (rank, heavy atoms inside) of every site holding some, by rank.
   std::vector<std::pair<std::size_t, std::size_t>> holding;
+
+  // Site `rank` is its site or holds some of its heavy atoms.
+  bool lies_in(std::size_t rank) const {
+    return site == rank || std::any_of(holding.begin(), holding.end(), [&](const auto& h) { return h.first == rank; });
+  }
 };
 
 // One entry per hetero group, in Structure::hetero_groups' order. `search`
