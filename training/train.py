@@ -5,40 +5,47 @@
     /usr/bin/python3 training/train.py [--alphapocket EXE] [--data DIR] [--work DIR] [--model KIND]
 
 Runs `alphapocket pockets --features` on every structure of the training sets (--train, default
-pockets-train) and the dev sets (--dev, default pockets-dev; PoseBusters folders too), labels each
-cavity by bench/ligand_sites' rules (a hit when its centre is within 4 A of a ligand atom, any copy of
+pockets-train and pockets-train-pb) and the dev sets (--dev, default pockets-dev and pockets-dev-pb), labels
+each cavity by bench/ligand_sites' rules (a hit when its centre is within 4 A of a ligand atom, any copy of
 it), fits the trees on the training sets only (fixed seeds), calibrates their margin by isotonic regression on
 out-of-fold margins of a grouped (by structure) 5-fold cross-validation, and writes
-molecule/data/ligandability.json and the test fixture tests/data/ligandability/pockets-dev.csv (every
-pockets-dev site's features with scikit-learn's margin and probability). Prints the cross-validated
-figures on pockets-train, the figures on pockets-dev for both rankings and reliability tables.
+molecule/data/ligandability.json, training/features.csv.gz (the training cavities' features) and the test
+fixture tests/data/ligandability/pockets-dev.csv (every pockets-dev site's features with scikit-learn's
+margin and probability). Prints the cross-validated figures on the training sets, the figures on the dev
+sets for both rankings and reliability tables. --check fits on training/features.csv.gz instead (CTest).
 """
 import argparse
-import atexit
 import csv
 import gzip
+import io
 import json
-import math
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
+from joblib import Parallel, delayed
 from sklearn.ensemble import GradientBoostingClassifier, RandomForestClassifier
 from sklearn.isotonic import IsotonicRegression
 from sklearn.model_selection import GroupKFold
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODEL = os.path.join(ROOT, "molecule", "data", "ligandability.json")
+FIXTURE = os.path.join(ROOT, "tests", "data", "ligandability", "pockets-dev.csv")
+# Every training cavity's features as alphapocket wrote them: --check fits on these instead of running
+# alphapocket on every training structure, and compares SAMPLE's rows with a fresh run.
+FEATURES = os.path.join(ROOT, "training", "features.csv.gz")
+SAMPLE = [("pockets-train", "2w1aC"), ("pockets-train-pb", "7M41_YQG")]  # small; one of two chains
 HIT = 4.0    # A, DCC and DCA
 MERGE = 1.7  # A, residues of one ligand
 SITE_VOLUME = 150             # molecule::kLigandSiteVolume: the smallest void (free space) the model compares
 VOID_VOLUME = 150             # molecule::kLigandVoidVolume: the smallest void (MS volume) that holds a ligand
-MIN_SITE_PROBABILITY = 0.04   # molecule::kMinSiteProbability: candidates below it are no sites
+MIN_SITE_PROBABILITY = 0.08   # molecule::kMinSiteProbability: candidates below it are no sites
 BAG = 5                       # gradient-boosted models averaged, seeds 0..BAG-1
+TREES, RATE, DEPTH = 100, 0.1, 3  # each one's trees, learning rate and depth
+MAX_FEATURES = 0.5            # the share of the features a split looks at
 CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
 CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
 RECENTERING_RADIUS = 7.0      # molecule::kRecenteringRadius (A)
@@ -124,12 +131,11 @@ def chain_count(path):
         return len({line[21] for line in f if line.startswith("ATOM")})
 
 
-def run_alphapocket(exe, dataset, work, extra, first=None):
-    """Features of every cavity of every structure: list of (name, header, rows, ligands, buried surface
-    points, whether the entry's ligand copies are one target, protein chains). The meshes are no features:
-    a 10 A lattice makes them (3/4 of a run at the default 0.5 A) take no time."""
-    entries = dataset_entries(dataset)[:first]
-    copies = not any(f.endswith(".ds") for f in os.listdir(dataset))
+def featurize(exe, entries, copies, work):
+    """Runs alphapocket on (name, structure file, ligands) entries, its outputs in `work` (kept: a cache), and
+    returns (name, header, rows, ligands, buried surface points, whether the entry's ligand copies are one
+    target, protein chains) of each. The meshes are no features: a 10 A lattice makes them (3/4 of a run at
+    the default 0.5 A) take no time."""
     os.makedirs(work, exist_ok=True)
 
     def one(entry):
@@ -137,10 +143,9 @@ def run_alphapocket(exe, dataset, work, extra, first=None):
         out = os.path.join(work, name)
         features, points = out + ".csv", out + ".points.csv"
         if not (os.path.exists(features) and os.path.exists(points)):
-            subprocess.run([exe, "-q", "pockets", path, "-o", out, "--features", features,
-                            "--surface-points", points,
-                            "--tunnels-from", "none", "--ranking", "geometric",
-                            "--mesh-resolution", "10"] + extra, check=True, stdout=subprocess.DEVNULL)
+            subprocess.run([exe, "-q", "pockets", path, "-o", out, "--outputs", "report", "--features", features,
+                            "--surface-points", points, "--tunnels-from", "none", "--ranking", "geometric",
+                            "--mesh-resolution", "10"], check=True, stdout=subprocess.DEVNULL)
         with open(features) as f:
             rows = list(csv.reader(f))
         surface = np.loadtxt(points, delimiter=",", skiprows=1, ndmin=2)
@@ -148,6 +153,55 @@ def run_alphapocket(exe, dataset, work, extra, first=None):
         return name, rows[0], rows[1:], ligands(), buried, copies, chain_count(path)
     with ThreadPoolExecutor(2) as pool:
         return list(pool.map(one, entries))
+
+
+def is_posebusters(dataset):
+    return not any(f.endswith(".ds") for f in os.listdir(dataset))
+
+
+def run_alphapocket(exe, dataset, work, first=None):
+    """Every cavity of the first `first` (all by default) structures of a set: see featurize."""
+    return featurize(exe, dataset_entries(dataset)[:first], is_posebusters(dataset), work)
+
+
+def cached_columns(header):
+    """The columns of alphapocket's features file that training/features.csv.gz keeps: not site_rank nor the
+    model's margin and probability, which change with the model."""
+    return [i for i, h in enumerate(header) if h != "site_rank" and h not in TRAILING]
+
+
+def write_feature_cache(structures, set_of):
+    """training/features.csv.gz: every cavity of the training structures, alphapocket's text (gzip without a
+    time stamp: the same features give the same bytes)."""
+    keep = cached_columns(structures[0][1])
+    out = io.StringIO()
+    out.write(",".join(["set", "structure"] + [structures[0][1][i] for i in keep]) + "\n")
+    for (name, _, rows, *_), set_name in zip(structures, set_of):
+        for r in rows:
+            out.write(",".join([set_name, name] + [r[i] for i in keep]) + "\n")
+    with open(FEATURES, "wb") as f:
+        f.write(gzip.compress(out.getvalue().encode(), 9, mtime=0))
+
+
+def read_feature_cache(data):
+    """The training structures as featurize gives them, from training/features.csv.gz and the data's ligands
+    (no buried surface points nor chain counts: the figures need a run of alphapocket)."""
+    with gzip.open(FEATURES, "rt") as f:
+        lines = list(csv.reader(f))
+    columns = lines[0][2:]
+    header = columns[:2] + ["site_rank"] + columns[2:] + TRAILING
+    by_structure = {}
+    for r in lines[1:]:
+        by_structure.setdefault((r[0], r[1]), []).append(r[2:4] + ["nan"] + r[4:] + ["nan"] * len(TRAILING))
+    structures, set_of, ligands = [], [], {}
+    for set_name, name in by_structure:
+        if set_name not in ligands:
+            dataset = os.path.join(data, set_name)
+            ligands[set_name] = ({n: l for n, _, l in dataset_entries(dataset)}, is_posebusters(dataset))
+        loaders, copies = ligands[set_name]
+        structures.append((name, header, by_structure[(set_name, name)], loaders[name](), None, copies, 0))
+        set_of.append(set_name)
+    return structures, np.array(set_of)
 
 
 def table(structures):
@@ -245,11 +299,6 @@ class Bagged:
     def __init__(self, models):
         self.models = models
 
-    def fit(self, X, y):
-        for m in self.models:
-            m.fit(X, y)
-        return self
-
     def decision_function(self, X):
         return np.mean([m.decision_function(X) for m in self.models], axis=0)
 
@@ -258,15 +307,32 @@ class Bagged:
         return np.mean([m.feature_importances_ for m in self.models], axis=0)
 
 
-def make_model(kind, bag=BAG, first_seed=0):
-    if kind == "gb":
-        return Bagged([GradientBoostingClassifier(n_estimators=200, learning_rate=0.05, max_depth=3, subsample=0.8,
-                                                  min_samples_leaf=5, random_state=seed)
-                       for seed in range(first_seed, first_seed + bag)])
-    if kind == "rf":
-        return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=0,
-                                      n_jobs=2)
-    raise SystemExit("unknown model kind " + kind)
+def make_model(a, first_seed=0):
+    """The model of the options: a.bag gradient-boosted models of seeds first_seed.., or a random forest."""
+    if a.model == "gb":
+        return Bagged([GradientBoostingClassifier(n_estimators=a.trees, learning_rate=a.rate, max_depth=a.depth,
+                                                  subsample=0.8, max_features=a.max_features, min_samples_leaf=5,
+                                                  random_state=seed)
+                       for seed in range(first_seed, first_seed + a.bag)])
+    return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=0)
+
+
+def fit_one(model, X, y):
+    return model.fit(X, y)
+
+
+def fit_models(jobs, n_jobs):
+    """Fits (model, X, y) jobs, a bagged model's members each on its own, on n_jobs processes (the fits are
+    deterministic: the same models whatever n_jobs)."""
+    tasks = [(m, X, y) for model, X, y in jobs for m in (model.models if isinstance(model, Bagged) else [model])]
+    fitted = iter(Parallel(n_jobs=n_jobs)(delayed(fit_one)(m, X, y) for m, X, y in tasks))
+    out = []
+    for model, _, _ in jobs:
+        if isinstance(model, Bagged):
+            out.append(Bagged([next(fitted) for _ in model.models]))
+        else:
+            out.append(next(fitted))
+    return out
 
 
 def margin(model, X):
@@ -315,25 +381,81 @@ def reliability(p, y, bins=(0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0001)):
     return "\n".join(lines)
 
 
-def check(rebuilt, margins, probabilities, cpp):
-    """0 when the rebuilt model is the committed one and alphapocket (C++, cpp: margin and probability per
-    site) agrees with scikit-learn on every site; else prints what differs and returns 1."""
+def run_sample(a):
+    """A fresh alphapocket run on SAMPLE, each structure's rows (features and alphapocket's margin and
+    probability), or None when its features are not training/features.csv.gz's (printed)."""
+    with open(FEATURES, "rb") as f:
+        cached = list(csv.reader(io.StringIO(gzip.decompress(f.read()).decode())))
+    runs = []
+    with tempfile.TemporaryDirectory(prefix="alphapocket_training_") as work:
+        for set_name, name in SAMPLE:
+            dataset = os.path.join(a.data, set_name)
+            entry = [e for e in dataset_entries(dataset) if e[0] == name]
+            (_, header, fresh, *_), = featurize(a.alphapocket, entry, is_posebusters(dataset), work)
+            keep = cached_columns(header)
+            if [header[i] for i in keep] != cached[0][2:] or \
+                    [[r[i] for i in keep] for r in fresh] != [r[2:] for r in cached if r[:2] == [set_name, name]]:
+                print(f"FAIL: alphapocket's features of {set_name}/{name} are not training/features.csv.gz's: "
+                      "alphapocket changed, rerun training/train.py", file=sys.stderr)
+                return None
+            print(f"{set_name}/{name}: alphapocket's features of its {len(fresh)} cavities are the cache's")
+            runs.append((set_name + "/" + name, header, fresh))
+    return runs
+
+
+def check(a, rebuilt, iso, names, runs):
+    """0 when the rebuilt model is the committed one, scikit-learn gives the fixture's margins and probabilities
+    (alphapocket's own agree with them: test_ligandability.cpp) and alphapocket's of every cavity of the
+    sample `runs` (run_sample) to 1e-6; else prints what differs and returns 1."""
     problems = []
+    text = model_text(export(rebuilt, names, iso, a.train.split(",")))
     with open(MODEL) as f:
         committed = f.read()
-    if committed != model_text(rebuilt):
-        committed, rebuilt = json.loads(committed), json.loads(model_text(rebuilt))
-        differ = [k for k in sorted(set(committed) | set(rebuilt)) if committed.get(k) != rebuilt.get(k)]
+    if committed != text:
+        committed, text = json.loads(committed), json.loads(text)
+        differ = [k for k in sorted(set(committed) | set(text)) if committed.get(k) != text.get(k)]
         problems.append("the rebuilt model is not molecule/data/ligandability.json byte for byte; differing: "
                         + (", ".join(differ) or "only the text"))
-    worst = np.abs(cpp - np.column_stack([margins, probabilities])).max(axis=0)
-    print(f"{len(margins)} pockets-dev sites: alphapocket vs scikit-learn, largest difference "
+    with open(FIXTURE) as f:
+        rows = list(csv.reader(f))
+    assert rows[0][3:-2] == names, "the fixture's features are not the model's"
+    X = np.array([[float(x) for x in r[3:-2]] for r in rows[1:]])
+    want = np.array([[float(x) for x in r[-2:]] for r in rows[1:]])
+    m = margin(rebuilt, X)
+    worst = np.abs(want - np.column_stack([m, iso.predict(m)])).max(axis=0)
+    print(f"{len(X)} pockets-dev sites of the fixture: scikit-learn vs the fixture, largest difference "
           f"{worst[0]:.3g} (margin), {worst[1]:.3g} (probability)")
-    if not worst.max() <= 1e-6:
-        problems.append("alphapocket's margins or probabilities differ from scikit-learn's by more than 1e-6")
+    if not worst.max() <= 1e-9:
+        problems.append("scikit-learn's margins or probabilities of tests/data/ligandability/pockets-dev.csv's sites "
+                        "are not the fixture's")
+    for name, header, fresh in runs:
+        X = np.array([[float(r[i]) for i in range(len(header)) if header[i] in names] for r in fresh])
+        m = margin(rebuilt, X)
+        cpp = np.array([[float(x) for x in r[-len(TRAILING):]] for r in fresh])
+        worst = np.abs(cpp - np.column_stack([m, iso.predict(m)])).max(axis=0)
+        print(f"{name}: alphapocket vs scikit-learn, largest difference {worst[0]:.3g} (margin), "
+              f"{worst[1]:.3g} (probability)")
+        if not worst.max() <= 1e-6:
+            problems.append(f"alphapocket's margins or probabilities of {name} differ from scikit-learn's by more "
+                            "than 1e-6")
     for p in problems:
         print("FAIL: " + p, file=sys.stderr)
     return 1 if problems else 0
+
+
+def cross_validated(a, Xfit, y, group, fit_rows, seeds):
+    """The out-of-fold margins of a grouped (by structure) 5-fold cross-validation, the folds, the isotonic
+    calibration fitted on those margins, and the models of `seeds` seed sets fitted on every row; all fits
+    run at once on a.jobs processes."""
+    folds = list(GroupKFold(5).split(Xfit, y, group))
+    everything = np.arange(len(y))
+    jobs = [(make_model(a), tr) for tr, _ in folds] + [(make_model(a, s * a.bag), everything) for s in range(seeds)]
+    models = fit_models([(m, Xfit[r[fit_rows[r]]], y[r[fit_rows[r]]]) for m, r in jobs], a.jobs)
+    oof = np.zeros(len(y))
+    for (_, te), m in zip(folds, models):
+        oof[te] = margin(m, Xfit[te])
+    iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
+    return folds, oof, iso, models[len(folds):]
 
 
 def main():
@@ -344,44 +466,51 @@ def main():
                     help="features are cached here (delete it after changing alphapocket)")
     ap.add_argument("--model", default="gb", choices=["gb", "rf"])
     ap.add_argument("--bag", type=int, default=BAG, help="gradient-boosted models averaged (seeds 0..BAG-1)")
+    ap.add_argument("--trees", type=int, default=TREES, help="trees of each gradient-boosted model")
+    ap.add_argument("--rate", type=float, default=RATE, help="their learning rate")
+    ap.add_argument("--depth", type=int, default=DEPTH, help="their depth")
+    ap.add_argument("--max-features", type=float, default=MAX_FEATURES,
+                    help="the share of the features each split of theirs looks at")
+    ap.add_argument("--min-probability", type=float, default=MIN_SITE_PROBABILITY,
+                    help="the figures' sites: candidates of at least this probability (alphapocket's cut by default)")
     ap.add_argument("--label", default="dca", choices=["dca", "dcc", "both"])
     ap.add_argument("--all-cavities", action="store_true", help="fit on every cavity, not the sites only")
     ap.add_argument("--drop", default="", help="comma-separated features to leave out (for experiments)")
-    ap.add_argument("--train", default="pockets-train,pockets-train-pb:34",
-                    help="comma-separated sets of --data to fit on, SET:N for the first N of a set (the shipped "
-                         "model: pockets-train and the first 34 entries of pockets-train-pb)")
-    ap.add_argument("--dev", default="pockets-dev",
+    ap.add_argument("--train", default="pockets-train,pockets-train-pb",
+                    help="comma-separated sets of --data to fit on, SET:N for the first N of a set")
+    ap.add_argument("--dev", default="pockets-dev,pockets-dev-pb",
                     help="comma-separated sets only predicted, to choose and report (pockets-dev among them: the "
                          "test fixture is its sites'); e.g. pockets-dev,pockets-dev-pb")
     ap.add_argument("--seeds", type=int, default=1,
                     help="fit this many seed sets (seeds 0..BAG-1, BAG..2BAG-1, ...) and print the spread of the dev "
                          "figures; the first is the model written")
     ap.add_argument("--no-write", action="store_true", help="write neither the model nor the fixture")
+    ap.add_argument("--jobs", type=int, default=2, help="processes fitting the models")
     ap.add_argument("--check", action="store_true",
-                    help="write nothing; fail unless the rebuilt model is the committed one and alphapocket's margin "
-                         "and probability of every pockets-dev site are scikit-learn's to 1e-6 (a CTest test)")
+                    help="write nothing; fit on training/features.csv.gz and fail unless the model is the committed "
+                         "one, the fixture's margins are scikit-learn's and a fresh alphapocket run on a few training "
+                         "structures gives the cached features and scikit-learn's margins to 1e-6 (a CTest test)")
     a = ap.parse_args()
-    if a.check and a.work == ap.get_default("work"):
-        a.work = tempfile.mkdtemp(prefix="alphapocket_training_")  # no stale cached features
-        atexit.register(shutil.rmtree, a.work, True)
 
     def load(sets):
         structures, set_of = [], []
         for spec in sets:  # SET or SET:N, the first N structures of SET (in its order)
             name, _, first = spec.partition(":")
-            st = run_alphapocket(a.alphapocket, os.path.join(a.data, name), os.path.join(a.work, name), [],
+            st = run_alphapocket(a.alphapocket, os.path.join(a.data, name), os.path.join(a.work, name),
                                  int(first) if first else None)
             structures += st
             set_of += [name] * len(st)
         return structures, np.array(set_of)
-    train, tset = load(a.train.split(","))
-    dev, dset = load(a.dev.split(","))
-    set_names = lambda specs: [s.partition(":")[0] for s in specs.split(",")]
-    if "pockets-dev" not in set_names(a.dev) or any(d in set_names(a.train) for d in set_names(a.dev)):
-        raise SystemExit("--dev must hold pockets-dev (the test fixture) and no training set")
+    if a.check:
+        runs = run_sample(a)
+        if runs is None:
+            sys.exit(1)
+        train, tset = read_feature_cache(a.data)
+        if list(dict.fromkeys(tset)) != [s.partition(":")[0] for s in a.train.split(",")]:
+            raise SystemExit("--check fits on training/features.csv.gz, whose sets are " + ",".join(dict.fromkeys(tset)))
+    else:
+        train, tset = load(a.train.split(","))
     names, X, dca, dcc, group, candidate, holds, centers, _, _ = table(train)
-    dnames, dX, ddca, ddcc, dgroup, dcandidate, dholds, dcenters, dids, dcpp = table(dev)
-    assert dnames == names
     y = {"dca": dca, "dcc": dcc, "both": dca & dcc}[a.label]
     dropped = [n for n in a.drop.split(",") if n]
     keep = [i for i, n in enumerate(names) if n not in dropped]
@@ -389,18 +518,20 @@ def main():
     Xfit = X.copy()
     Xfit[:, [i for i in range(len(names)) if i not in keep]] = 0
     fit_rows = np.ones(len(y), bool) if a.all_cavities else candidate
+    folds, oof, iso, models = cross_validated(a, Xfit, y, group, fit_rows, 1 if a.check else a.seeds)
+    if a.check:
+        sys.exit(check(a, models[0], iso, names, runs))
 
-    # Grouped cross-validation over both training folders: out-of-fold margins.
-    folds = list(GroupKFold(5).split(Xfit, y, group))
-    oof = np.zeros(len(y))
-    for tr, te in folds:
-        tr = tr[fit_rows[tr]]
-        oof[te] = margin(make_model(a.model, a.bag).fit(Xfit[tr], y[tr]), Xfit[te])
+    dev, dset = load(a.dev.split(","))
+    set_names = lambda specs: [s.partition(":")[0] for s in specs.split(",")]
+    if "pockets-dev" not in set_names(a.dev) or any(d in set_names(a.train) for d in set_names(a.dev)):
+        raise SystemExit("--dev must hold pockets-dev (the test fixture) and no training set")
+    dnames, dX, ddca, ddcc, dgroup, dcandidate, dholds, dcenters, dids, dcpp = table(dev)
+    assert dnames == names
     # Reliability of the calibration, itself cross-fitted (each fold mapped by the others' isotonic fit).
     oof_p = np.zeros(len(y))
     for tr, te in folds:
         oof_p[te] = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof[tr], y[tr]).predict(oof[te])
-    iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
     dXfit = dX.copy()
     dXfit[:, [i for i in range(len(names)) if i not in keep]] = 0
     is_void, dis_void = X[:, names.index("is_void")] == 1, dX[:, names.index("is_void")] == 1
@@ -426,11 +557,10 @@ def main():
     # Several seeds: the spread of the dev figures (the shipped model is the first).
     shipped = None
     spread = {}
-    for s_ in range(a.seeds):
-        model = make_model(a.model, a.bag, s_ * a.bag).fit(Xfit[fit_rows], y[fit_rows])
+    for s_, model in enumerate(models):
         dm_s = margin(model, dXfit)
         dp_s = iso.predict(dm_s)
-        dsites_s = (dcandidate & ~dis_void & (dp_s >= MIN_SITE_PROBABILITY)) | dholds
+        dsites_s = (dcandidate & ~dis_void & (dp_s >= a.min_probability)) | dholds
         print(f"seeds {s_ * a.bag}-{s_ * a.bag + a.bag - 1}:")
         for k, f in report("  dev", dev, dset, dchains, dgroup, dsites_s, dlog_score, dcenters, dm_s, dp_s).items():
             spread.setdefault(k, []).append(f)
@@ -444,7 +574,7 @@ def main():
                 for c in ("dcc", "dca") for i, t in enumerate((1, 3))))
 
     # The sites: the candidates alphapocket keeps (out of fold on the training folders).
-    sites = (candidate & ~is_void & (oof_p >= MIN_SITE_PROBABILITY)) | holds
+    sites = (candidate & ~is_void & (oof_p >= a.min_probability)) | holds
     print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
           f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive) "
           f"from {len(train)} structures")
@@ -470,20 +600,17 @@ def main():
     imp = sorted(zip(model.feature_importances_, names), reverse=True)[:16]
     print("top features: " + ", ".join(f"{n} {v:.3f}" for v, n in imp))
     ds_ = dcandidate & (dset[dgroup] == "pockets-dev")  # the fixture: pockets-dev's candidates
-    if a.check:
-        sys.exit(check(export(model, names, iso, a.train.split(",")), dm[ds_], dp[ds_], dcpp[ds_]))
     if a.no_write:
         return
     with open(MODEL, "w") as f:
         f.write(model_text(export(model, names, iso, a.train.split(","))))
-    fixture = os.path.join(ROOT, "tests", "data", "ligandability", "pockets-dev.csv")
-    os.makedirs(os.path.dirname(fixture), exist_ok=True)
-    with open(fixture, "w") as f:
+    write_feature_cache(train, tset)
+    with open(FIXTURE, "w") as f:
         f.write("structure,kind,cavity_rank," + ",".join(names) + ",margin,probability\n")
         for i in np.where(ds_)[0]:
             f.write(",".join(dids[i] + [repr(float(x)) for x in dX[i]] + [repr(float(dm[i])), repr(float(dp[i]))])
                     + "\n")
-    print("wrote molecule/data/ligandability.json and tests/data/ligandability/pockets-dev.csv")
+    print("wrote molecule/data/ligandability.json, training/features.csv.gz and tests/data/ligandability/pockets-dev.csv")
 
 
 if __name__ == "__main__":
