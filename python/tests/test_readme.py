@@ -5,6 +5,7 @@ import re
 import subprocess
 import sys
 
+import alphapocket
 from conftest import DATA, PDB, ROOT
 
 
@@ -43,7 +44,10 @@ def test_sites_csv_example(tmp_path):
     subprocess.run([sys.executable, ROOT / "examples" / "python" / "sites_csv.py", PDB, out], check=True)
     rows = out.read_text().splitlines()
     assert rows[0].startswith("rank,kind,probability,score,sa_volume")
-    assert len(rows) > 5
+    # One row per site of the same analysis, in rank order.
+    sites = alphapocket.analyze(PDB, tunnels_from="none").sites
+    assert len(sites) >= 3
+    assert [row.split(",")[0] for row in rows[1:]] == [str(site.rank) for site in sites]
     rank, kind, probability, score = rows[1].split(",")[:4]
     assert rank == "1" and kind in ("pocket", "void") and 0 < float(probability) <= 1 and float(score) > 0
     probabilities = [float(row.split(",")[2]) for row in rows[1:]]
