@@ -54,7 +54,7 @@ struct Run {
 
   Run()
       : structure(molecule::read_structure(kStructure)),
-        search(molecule::search_pockets(structure, {})),
+        search(molecule::search_pockets(structure, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true)),
         ligands(molecule::ligand_sites(structure, search)) {
     run.file = kStructure;
     run.structure = &structure;
@@ -757,7 +757,8 @@ TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot h
   // The same molecule 20000 A away: every centre is beyond the columns.
   molecule::Structure far = r.structure;
   for (molecule::Atom& a : far.atoms) a.position.x += 20000;
-  const molecule::PocketSearch search = molecule::search_pockets(far, {});
+  const molecule::PocketSearch search =
+      molecule::search_pockets(far, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true);
   const std::vector<molecule::LigandSite> ligands = molecule::ligand_sites(far, search);
   molecule::PocketRun run = r.run;
   run.structure = &far;

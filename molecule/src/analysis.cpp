@@ -55,7 +55,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
                                                           std::to_string(options.max_atoms),
                           /*skipped=*/true);
     try {
-      a.search = search_pockets(a.structure, options.cavities, options.ranking);
+      a.search = search_pockets(a.structure, options.cavities, options.ranking, options.outputs.meshes);
     } catch (const alpha::Error& e) {
       throw AnalysisError(e.kind(), alpha::in_file(file, e).what());  // e.g. all atoms in one plane
     }

@@ -48,11 +48,14 @@
 #pragma once
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/eroded_union.hpp"
 #include "alpha/geometry.hpp"
+#include "alpha/union_of_balls.hpp"
 
 namespace molecule {
 
@@ -228,12 +231,24 @@ struct CavityOptions {
   unsigned threads = 1;
 };
 
+// The two bodies find_cavities measures the cavities with: the
+// solvent-accessible body (the union of the probe-inflated balls, the
+// complex at alpha_sq = 0) and the solvent-excluded body (that union eroded
+// by the probe), which the meshes are made of (molecule/pocket_meshes.hpp).
+// On the heap: the union refers to the complex and the eroded union to the
+// union, so moving this keeps them good; keep the complex alive and in place.
+struct SolventBodies {
+  std::unique_ptr<const alpha::UnionOfBalls> accessible;
+  std::unique_ptr<const alpha::ErodedUnion> excluded;
+};
+
 // Cavities of the alpha complex `ac` of the atoms; radii[i] is the van der
 // Waals radius of input point i (the complex's weights must be (radii[i] +
 // probe)^2). Pockets and voids are ranked by cavity_score. Deterministic;
 // throws alpha::Error on inconsistent input (radii count, weights, options).
+// With `bodies`, the two bodies it measured with are kept there.
 Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii,
-                       const CavityOptions& options);
+                       const CavityOptions& options, SolventBodies* bodies = nullptr);
 
 // The ranking score of a cavity (larger is better): how likely it is to
 // bind a drug-like ligand, from its size and its burial,

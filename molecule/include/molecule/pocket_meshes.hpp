@@ -63,8 +63,11 @@ double cast_spacing(double resolution, double ms_volume);
 inline constexpr double kCastTolerance = 0.01;
 alpha::SurfaceMesh cast_mesh(const alpha::ErodedUnion& eu, const Cavity& cavity, double resolution);
 
-// Throws alpha::Error for a resolution that is not > 0 or a molecule too
-// large for it (more than 2^31 lattice nodes).
-PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution);
+// Made of the search's solvent-excluded body (PocketSearch::bodies, eroded
+// by the search's probe). Throws alpha::Error for a resolution that is not
+// > 0 or a molecule too large for it (more than 2^31 lattice nodes), and
+// for a search that kept no bodies (search_pockets without keep_bodies:
+// Misuse).
+PocketMeshes pocket_meshes(const PocketSearch& search, double resolution);
 
 }  // namespace molecule

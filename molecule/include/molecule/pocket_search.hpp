@@ -19,6 +19,10 @@ struct PocketSearch {
   // The atoms' weighted points: their triangulation and alpha complex
   // (empty in a search not run).
   std::optional<alpha::PointSetComplex> shape;
+  // The union of the probe-inflated balls and its erosion find_cavities
+  // measured with, kept for the meshes (they refer to shape's complex);
+  // empty unless asked for (search_pockets' keep_bodies).
+  SolventBodies bodies;
   Cavities cavities;  // atom indices are indices into Structure::atoms
   // Wall-clock seconds of the stages, for logs and benchmarks.
   double complex_seconds = 0;
@@ -27,9 +31,12 @@ struct PocketSearch {
 };
 
 // The complex, its cavities (find_cavities), then the sites ranked
-// (rank_sites, molecule/site_ranking.hpp). Throws alpha::Error for unusable
-// input (e.g. all atoms in one plane) or options (negative probe).
+// (rank_sites, molecule/site_ranking.hpp). With keep_bodies the search keeps
+// its two solvent bodies for pocket_meshes; without, they are freed as soon
+// as the cavities are measured (they are a quarter of the peak memory).
+// Throws alpha::Error for unusable input (e.g. all atoms in one plane) or
+// options (negative probe).
 PocketSearch search_pockets(const Structure& structure, const CavityOptions& options,
-                            SiteRanking ranking = SiteRanking::probability);
+                            SiteRanking ranking = SiteRanking::probability, bool keep_bodies = false);
 
 }  // namespace molecule

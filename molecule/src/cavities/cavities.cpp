@@ -159,7 +159,8 @@ public:
       : ac_(ac), t_(ac.triangulation()), s_(ac.simplices()), radii_(radii), options_(options), level_(ac.level(0.0)),
         sealing_(std::async(options.threads > 1 ? std::launch::async : std::launch::deferred,
                             [&ac] { return sealed_from(ac); })),
-        flow_(ac, level_), space_(ac), excluded_(space_.union_of_balls(), options.probe),
+        flow_(ac, level_), union_(std::make_unique<const alpha::UnionOfBalls>(ac)), space_(*union_),
+        excluded_(std::make_unique<const alpha::ErodedUnion>(*union_, options.probe)),
         sealed_from_(sealing_.get()),
         atoms_(std::max(options.burial_radius, 1.0)), nearest_(t_.points(), radii, options.probe) {
     for (Index i = 0; i < t_.num_points(); ++i) atoms_.add(t_.point(i), i);
@@ -167,6 +168,9 @@ public:
   }
 
   Index level() const { return level_; }
+
+  // The two bodies, given away: the builder is done with them.
+  SolventBodies bodies() && { return {std::move(union_), std::move(excluded_)}; }
 
   // The regions' basins, then the cavities' measures, each on
   // options.threads threads: every task fills its own slot, and the lists
@@ -212,8 +216,9 @@ private:
   // union are built (with more than one thread).
   std::future<std::vector<Index>> sealing_;
   alpha::DiscreteFlow flow_;
+  std::unique_ptr<const alpha::UnionOfBalls> union_;  // the solvent-accessible body
   CavitySpace space_;
-  alpha::ErodedUnion excluded_;  // the solvent-excluded body: the SA union eroded by the probe
+  std::unique_ptr<const alpha::ErodedUnion> excluded_;  // the solvent-excluded body: union_ eroded by the probe
   std::vector<Index> sealed_from_;   // cell -> see sealed_from()
   // All atoms, bucketed: the burial count and the clearance look only near
   // the cavity (a scan of all atoms per cavity is slow on large assemblies).
@@ -292,7 +297,7 @@ private:
     cav.sa_volume = sa_volume;
     // The probe layer between the SA and the molecular surface whose
     // nearest solvent-accessible point lies on the cavity's wall.
-    const alpha::LayerShare layer = excluded_.cells_share(cells);
+    const alpha::LayerShare layer = excluded_->cells_share(cells);
     std::vector<Opening> openings;
     Index last = cells.front();
     Vec3 weighted{};
@@ -383,7 +388,8 @@ std::string site_cavity_name(const Site& site) {
   return (site.is_void ? "void " : "pocket ") + std::to_string(site.index + 1);
 }
 
-Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options) {
+Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>& radii, const CavityOptions& options,
+                       SolventBodies* bodies) {
   check_input(ac, radii, options);
   CavityBuilder builder(ac, radii, options);
   Cavities out;
@@ -397,6 +403,7 @@ Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>&
       out.tunnels.push_back(make_tunnel(ac, p, radii, options.probe));
   std::stable_sort(out.tunnels.begin(), out.tunnels.end(),
                    [](const Tunnel& a, const Tunnel& b) { return a.death_alpha_sq > b.death_alpha_sq; });
+  if (bodies) *bodies = std::move(builder).bodies();
   return out;
 }
 

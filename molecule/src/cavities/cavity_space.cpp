@@ -28,7 +28,7 @@ double lens_area(double r0, double r1, double d) {
 
 }  // namespace
 
-CavitySpace::CavitySpace(const alpha::AlphaComplex& ac) : ac_(ac), union_(ac), level_(ac.level(0.0)) {}
+CavitySpace::CavitySpace(const alpha::UnionOfBalls& u) : ac_(u.complex()), union_(u), level_(ac_.level(0.0)) {}
 
 CellSpace CavitySpace::cell(Index c) const {
   const alpha::Triangulation& t = ac_.triangulation();

@@ -18,8 +18,9 @@ struct CellSpace {
 
 class CavitySpace {
 public:
-  // `ac`: the complex of the probe-inflated balls (weights = squared radii).
-  explicit CavitySpace(const alpha::AlphaComplex& ac);
+  // `u`: the union of the probe-inflated balls (of their complex, weights =
+  // squared radii); kept alive by the caller.
+  explicit CavitySpace(const alpha::UnionOfBalls& u);
 
   // The cell's part of the inflated balls' union (alpha::UnionOfBalls::
   // cell_cover): exact per cell, so exact over any set of cells.
@@ -36,7 +37,7 @@ public:
 
 private:
   const alpha::AlphaComplex& ac_;
-  alpha::UnionOfBalls union_;
+  const alpha::UnionOfBalls& union_;
   alpha::Index level_;
 };
 

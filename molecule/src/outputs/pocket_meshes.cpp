@@ -9,7 +9,7 @@
 
 #include "alpha/eroded_union.hpp"
 #include "alpha/eroded_union_mesh.hpp"
-#include "alpha/union_of_balls.hpp"
+#include "alpha/error.hpp"
 #include "outputs/pocket_colors.hpp"
 
 namespace molecule {
@@ -59,10 +59,11 @@ alpha::SurfaceMesh cast_mesh(const alpha::ErodedUnion& eu, const Cavity& cavity,
   return m;
 }
 
-PocketMeshes pocket_meshes(const PocketSearch& search, double probe, double resolution) {
+PocketMeshes pocket_meshes(const PocketSearch& search, double resolution) {
   const auto start = std::chrono::steady_clock::now();
-  const alpha::UnionOfBalls balls(search.shape->complex());
-  const alpha::ErodedUnion eu(balls, probe);
+  if (!search.bodies.excluded)
+    alpha::fail("pocket_meshes: the search kept no solvent-excluded body", alpha::ErrorKind::Misuse);
+  const alpha::ErodedUnion& eu = *search.bodies.excluded;
   const Cavities& cavities = search.cavities;
   const CavityRanks ranks = cavity_ranks(cavities);
   PocketMeshes out;

@@ -205,7 +205,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
         files.emplace_back(fs::relative(file.companion_path, path_).string(), std::move(file.companion));
       names.push_back(fs::path(name).filename().string());
     };
-    meshes = pocket_meshes(*run.search, run.options.probe, run.mesh_resolution);
+    meshes = pocket_meshes(*run.search, run.mesh_resolution);
     mesh_seconds_ = meshes->seconds;
     mesh_file(molecule_mesh_path(run.mesh_format), meshes->surface);
     for (std::size_t i = 0; i < meshes->pockets.size(); ++i)

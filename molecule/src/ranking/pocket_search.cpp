@@ -16,7 +16,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-PocketSearch search_pockets(const Structure& structure, const CavityOptions& options, SiteRanking ranking) {
+PocketSearch search_pockets(const Structure& structure, const CavityOptions& options, SiteRanking ranking,
+                            bool keep_bodies) {
   PocketSearch out;
   const auto start = std::chrono::steady_clock::now();
   AtomBalls balls = atom_balls(structure.atoms, options.probe);
@@ -27,7 +28,7 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
   out.complex_seconds = seconds_since(start);
 
   const auto cavities_start = std::chrono::steady_clock::now();
-  out.cavities = find_cavities(out.shape->complex(), radii, options);
+  out.cavities = find_cavities(out.shape->complex(), radii, options, keep_bodies ? &out.bodies : nullptr);
   out.cavities_seconds = seconds_since(cavities_start);
   const auto ranking_start = std::chrono::steady_clock::now();
   rank_sites(structure, out.cavities, ranking);
