@@ -48,7 +48,7 @@ TREES, RATE, DEPTH = 100, 0.1, 3  # each one's trees, learning rate and depth
 MAX_FEATURES = 0.5            # the share of the features a split looks at
 CLUSTER_RADIUS = 10.0         # molecule::kSiteClusterRadius (A)
 CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
-RECENTERING_RADIUS = 7.0      # molecule::kRecenteringRadius (A)
+RECENTERING_RADIUS = 6.0      # molecule::kRecenteringRadius (A)
 BURIED_POINT_ATOMS = 95       # molecule::kBuriedPointAtoms
 LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
 TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
@@ -307,8 +307,65 @@ class Bagged:
         return np.mean([m.feature_importances_ for m in self.models], axis=0)
 
 
+class PairwiseRanker:
+    """xgboost's gradient-boosted trees fitted to rank each structure's ligand sites above its other candidates
+    (rank:pairwise, a group per structure) rather than to classify each candidate on its own; kept as the model
+    file's trees, which give the margin (in double, as alphapocket sums them)."""
+
+    def __init__(self, trees, rate, depth, max_features, seed):
+        self.params = {"objective": "rank:pairwise", "eta": rate, "max_depth": depth, "subsample": 0.8,
+                       "colsample_bynode": max_features, "seed": seed, "nthread": 1, "tree_method": "exact",
+                       "base_score": 0.5}
+        self.rounds = trees
+
+    def fit(self, X, y, group):
+        import xgboost  # Debian's python3-xgboost
+        order = np.argsort(group, kind="stable")
+        data = xgboost.DMatrix(X[order], label=y[order])
+        data.set_group(np.unique(group[order], return_counts=True)[1])
+        booster = xgboost.train(self.params, data, num_boost_round=self.rounds)
+        raw = json.loads(booster.save_raw("json").decode())
+        self.init = float(raw["learner"]["learner_model_param"]["base_score"])
+        self.trees = [xgboost_tree(t) for t in raw["learner"]["gradient_booster"]["model"]["trees"]]
+        gain = booster.get_score(importance_type="total_gain")
+        self.feature_importances_ = np.array([gain.get(f"f{i}", 0.0) for i in range(X.shape[1])])
+        self.feature_importances_ /= max(self.feature_importances_.sum(), 1e-300)
+        return self
+
+    def decision_function(self, X):
+        return self.init + sum(tree_values(t, X) for t in self.trees)
+
+
+def xgboost_tree(t):
+    """An xgboost tree in the model file's layout. xgboost sends x left when float(x) < condition, the file when
+    float(x) <= threshold: the threshold is the float just below the condition."""
+    leaf = [l < 0 for l in t["left_children"]]
+    return {"feature": [-1 if z else int(f) for f, z in zip(t["split_indices"], leaf)],
+            "threshold": [0.0 if z else float(np.nextafter(np.float32(c), np.float32(-np.inf)))
+                          for c, z in zip(t["split_conditions"], leaf)],
+            "left": [int(x) for x in t["left_children"]], "right": [int(x) for x in t["right_children"]],
+            "value": [float(np.float32(c)) if z else 0.0 for c, z in zip(t["split_conditions"], leaf)]}
+
+
+def tree_values(t, X):
+    """The leaf values a tree of the model file's layout gives the rows of X (a feature's value as a float)."""
+    X32 = X.astype(np.float32)
+    feature, threshold, left, right, value = (np.array(t[k]) for k in ("feature", "threshold", "left", "right", "value"))
+    node = np.zeros(len(X), int)
+    inner = left[node] >= 0
+    while inner.any():
+        n = node[inner]
+        node[inner] = np.where(X32[inner, feature[n]] <= threshold[n], left[n], right[n])
+        inner = left[node] >= 0
+    return value[node]
+
+
 def make_model(a, first_seed=0):
-    """The model of the options: a.bag gradient-boosted models of seeds first_seed.., or a random forest."""
+    """The model of the options: a.bag gradient-boosted models of seeds first_seed.. (ranking or classifying), or
+    a random forest."""
+    if a.model == "rank":
+        return Bagged([PairwiseRanker(a.trees, a.rate, a.depth, a.max_features, seed)
+                       for seed in range(first_seed, first_seed + a.bag)])
     if a.model == "gb":
         return Bagged([GradientBoostingClassifier(n_estimators=a.trees, learning_rate=a.rate, max_depth=a.depth,
                                                   subsample=0.8, max_features=a.max_features, min_samples_leaf=5,
@@ -317,17 +374,17 @@ def make_model(a, first_seed=0):
     return RandomForestClassifier(n_estimators=300, min_samples_leaf=3, max_features=0.3, random_state=0)
 
 
-def fit_one(model, X, y):
-    return model.fit(X, y)
+def fit_one(model, X, y, group):
+    return model.fit(X, y, group) if isinstance(model, PairwiseRanker) else model.fit(X, y)
 
 
 def fit_models(jobs, n_jobs):
-    """Fits (model, X, y) jobs, a bagged model's members each on its own, on n_jobs processes (the fits are
-    deterministic: the same models whatever n_jobs)."""
-    tasks = [(m, X, y) for model, X, y in jobs for m in (model.models if isinstance(model, Bagged) else [model])]
-    fitted = iter(Parallel(n_jobs=n_jobs)(delayed(fit_one)(m, X, y) for m, X, y in tasks))
+    """Fits (model, X, y, structure of each row) jobs, a bagged model's members each on its own, on n_jobs
+    processes (the fits are deterministic: the same models whatever n_jobs)."""
+    tasks = [(m, X, y, g) for model, X, y, g in jobs for m in (model.models if isinstance(model, Bagged) else [model])]
+    fitted = iter(Parallel(n_jobs=n_jobs)(delayed(fit_one)(m, X, y, g) for m, X, y, g in tasks))
     out = []
-    for model, _, _ in jobs:
+    for model, *_ in jobs:
         if isinstance(model, Bagged):
             out.append(Bagged([next(fitted) for _ in model.models]))
         else:
@@ -342,6 +399,12 @@ def margin(model, X):
 
 
 def export(model, names, iso, trained_on):
+    if isinstance(model, Bagged) and isinstance(model.models[0], PairwiseRanker):  # the mean of their margins
+        assert len({m.init for m in model.models}) == 1
+        return {"format": "alphapocket ligandability model 1", "kind": f"{len(model.models)} x xgboost rank:pairwise",
+                "trained_on": "+".join(trained_on), "features": names, "init": model.models[0].init,
+                "scale": 1.0 / len(model.models), "trees": [t for m in model.models for t in m.trees],
+                "calibration": {"x": [float(x) for x in iso.X_thresholds_], "y": [float(y) for y in iso.y_thresholds_]}}
     if isinstance(model, Bagged):  # the same init (the prior log-odds) and learning rate in every member
         inits = {float(m._raw_predict_init(np.zeros((1, len(names)), dtype=np.float32))[0, 0]) for m in model.models}
         assert len(inits) == 1, inits
@@ -450,7 +513,7 @@ def cross_validated(a, Xfit, y, group, fit_rows, seeds):
     folds = list(GroupKFold(5).split(Xfit, y, group))
     everything = np.arange(len(y))
     jobs = [(make_model(a), tr) for tr, _ in folds] + [(make_model(a, s * a.bag), everything) for s in range(seeds)]
-    models = fit_models([(m, Xfit[r[fit_rows[r]]], y[r[fit_rows[r]]]) for m, r in jobs], a.jobs)
+    models = fit_models([(m, Xfit[r[fit_rows[r]]], y[r[fit_rows[r]]], group[r[fit_rows[r]]]) for m, r in jobs], a.jobs)
     oof = np.zeros(len(y))
     for (_, te), m in zip(folds, models):
         oof[te] = margin(m, Xfit[te])
@@ -464,7 +527,7 @@ def main():
     ap.add_argument("--data", default=os.path.join(ROOT, "..", "shared", "data"))
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "training"),
                     help="features are cached here (delete it after changing alphapocket)")
-    ap.add_argument("--model", default="gb", choices=["gb", "rf"])
+    ap.add_argument("--model", default="gb", choices=["gb", "rank", "rf"])
     ap.add_argument("--bag", type=int, default=BAG, help="gradient-boosted models averaged (seeds 0..BAG-1)")
     ap.add_argument("--trees", type=int, default=TREES, help="trees of each gradient-boosted model")
     ap.add_argument("--rate", type=float, default=RATE, help="their learning rate")
