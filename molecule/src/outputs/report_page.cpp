@@ -9,11 +9,14 @@
 
 #include "molecule/residues.hpp"
 #include "outputs/pocket_colors.hpp"
+#include "outputs/report_numbers.hpp"
 
 namespace molecule {
 namespace {
 
 using json = nlohmann::ordered_json;
+// Coordinates and radii as report.json rounds lengths.
+using report_number::length;
 
 std::string hex(Rgb c) {
   char buf[8];
@@ -21,9 +24,7 @@ std::string hex(Rgb c) {
   return buf;
 }
 
-double rounded(double x) { return std::round(x * 1000) / 1000; }
-
-json point(const alpha::Vec3& p) { return {rounded(p.x), rounded(p.y), rounded(p.z)}; }
+json point(const alpha::Vec3& p) { return {length(p.x), length(p.y), length(p.z)}; }
 
 json node(const std::string& kind, json params = json::object(), json children = json::array()) {
   json n = {{"kind", kind}};
@@ -71,13 +72,13 @@ json cartoon(const Structure& structure) {
 }
 
 json sphere(const SinkSphere& s, const std::string& color) {
-  return node("primitive", {{"kind", "ellipsoid"}, {"center", point(s.center)}, {"radius", rounded(s.radius)}, {"color", color}});
+  return node("primitive", {{"kind", "ellipsoid"}, {"center", point(s.center)}, {"radius", length(s.radius)}, {"color", color}});
 }
 
 json cast(const TriangleMesh& mesh, const std::string& color) {
   json vertices = json::array(), indices = json::array();
   for (const alpha::Vec3& p : mesh.points)
-    for (const double x : {p.x, p.y, p.z}) vertices.push_back(rounded(x));
+    for (const double x : {p.x, p.y, p.z}) vertices.push_back(length(x));
   for (const auto& t : mesh.triangles)
     for (const alpha::Index i : t) indices.push_back(i);
   return node("primitive", {{"kind", "mesh"}, {"vertices", std::move(vertices)}, {"indices", std::move(indices)},
