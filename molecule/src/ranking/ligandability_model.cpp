@@ -17,8 +17,8 @@ extern const char* const kLigandabilityModelJson;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  alpha::fail("ligandability model: " + what, alpha::ErrorKind::BadInput);
+[[noreturn]] void fail_model(const std::string& what, alpha::ErrorKind kind) {
+  alpha::fail("ligandability model: " + what, kind);
 }
 
 // Reads the JSON a model file is: objects, arrays, strings without escapes
@@ -36,18 +36,21 @@ public:
     return true;
   }
   void expect(char c) {
-    if (!accept(c)) fail(std::string("expected '") + c + "' at byte " + std::to_string(at_));
+    if (!accept(c))
+      fail_model(std::string("expected '") + c + "' at byte " + std::to_string(at_), alpha::ErrorKind::BadInput);
   }
   void finish() {
     skip_space();
-    if (at_ != text_.size()) fail("text after the model at byte " + std::to_string(at_));
+    if (at_ != text_.size())
+      fail_model("text after the model at byte " + std::to_string(at_), alpha::ErrorKind::BadInput);
   }
 
   std::string_view string() {
     expect('"');
     const std::size_t start = at_;
     at_ = text_.find_first_of("\"\\", at_);
-    if (at_ == std::string_view::npos || text_[at_] != '"') fail("a string is not closed or has an escape");
+    if (at_ == std::string_view::npos || text_[at_] != '"')
+      fail_model("a string is not closed or has an escape", alpha::ErrorKind::BadInput);
     return text_.substr(start, at_++ - start);
   }
   template <class T>
@@ -58,7 +61,8 @@ public:
       skip_space();
       T x{};
       const auto [end, error] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), x);
-      if (error != std::errc()) fail("expected a number at byte " + std::to_string(at_));
+      if (error != std::errc())
+        fail_model("expected a number at byte " + std::to_string(at_), alpha::ErrorKind::BadInput);
       at_ = end - text_.data();
       return x;
     }
@@ -90,7 +94,7 @@ public:
       expect('}');
     }
     for (std::size_t k = 0; k < required.size(); ++k)
-      if (!(seen >> k & 1)) fail("no \"" + std::string(required.begin()[k]) + "\"");
+      if (!(seen >> k & 1)) fail_model("no \"" + std::string(required.begin()[k]) + "\"", alpha::ErrorKind::BadInput);
   }
 
 private:
@@ -117,17 +121,18 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
       else if (key == "right") in.array(right);
       else if (key == "threshold") in.array(threshold);
       else if (key == "value") in.array(value);
-      else fail("a tree has \"" + std::string(key) + "\"");
+      else
+        fail_model("a tree has \"" + std::string(key) + "\"", alpha::ErrorKind::BadInput);
     });
     const std::size_t n = feature.size();
     if (n == 0 || left.size() != n || right.size() != n || threshold.size() != n || value.size() != n)
-      fail("a tree's arrays differ in length");
+      fail_model("a tree's arrays differ in length", alpha::ErrorKind::BadInput);
     roots_.push_back(nodes_.size());
     for (std::size_t k = 0; k < n; ++k) {
       // Children come after their parent: every walk ends.
       if (left[k] >= 0 && (feature[k] < 0 || feature[k] >= features || left[k] <= int(k) || right[k] <= int(k) ||
                            left[k] >= int(n) || right[k] >= int(n)))
-        fail("a tree node is out of range");
+        fail_model("a tree node is out of range", alpha::ErrorKind::BadInput);
       nodes_.push_back({feature[k], left[k], right[k], threshold[k], value[k]});
     }
   };
@@ -135,7 +140,8 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
     if (key == "features") {
       std::vector<std::string> names;
       in.array(names);
-      if (names != site_feature_names()) fail("its features are not this version's site features");
+      if (names != site_feature_names())
+        fail_model("its features are not this version's site features", alpha::ErrorKind::BadInput);
     } else if (key == "init") {
       init_ = in.value<double>();
     } else if (key == "scale") {
@@ -151,7 +157,8 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
       in.object({"x", "y"}, [&](std::string_view k) {
         if (k == "x") in.array(knots_x_);
         else if (k == "y") in.array(knots_y_);
-        else fail("the calibration has \"" + std::string(k) + "\"");
+        else
+          fail_model("the calibration has \"" + std::string(k) + "\"", alpha::ErrorKind::BadInput);
       });
     } else {
       in.string();  // format, kind, trained_on: notes
@@ -159,11 +166,11 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
   });
   in.finish();
   if (knots_x_.empty() || knots_x_.size() != knots_y_.size() || !std::is_sorted(knots_x_.begin(), knots_x_.end()))
-    fail("the calibration's knots are not sorted pairs");
+    fail_model("the calibration's knots are not sorted pairs", alpha::ErrorKind::BadInput);
 }
 
 double LigandabilityModel::margin(const std::vector<double>& features) const {
-  if (features.size() != site_feature_names().size()) fail("wrong number of features");
+  if (features.size() != site_feature_names().size()) fail_model("wrong number of features", alpha::ErrorKind::Misuse);
   double sum = 0;
   for (const std::size_t root : roots_) {
     const Node* tree = &nodes_[root];
@@ -185,7 +192,15 @@ double LigandabilityModel::probability(double m) const {
 }
 
 const LigandabilityModel& default_ligandability_model() {
-  static const LigandabilityModel kModel(kLigandabilityModelJson);  // immutable once built
+  // Immutable once built. The compiled-in model is no caller's input: one
+  // that does not parse is a broken build (Internal), not bad input.
+  static const LigandabilityModel kModel = [] {
+    try {
+      return LigandabilityModel(kLigandabilityModelJson);
+    } catch (const alpha::Error& e) {
+      throw alpha::Error(e.what(), alpha::ErrorKind::Internal);
+    }
+  }();
   return kModel;
 }
 

@@ -62,16 +62,17 @@ RadiusFile parse_radius_file(std::string_view text, const std::string& path) {
     const bool hole = key == "VDWR";
     if (!hole && (key == "BOND" || key.rfind("REMARK", 0) == 0)) continue;
     const std::size_t expected = hole ? 4 : 3;
-    const auto fail = [&](const std::string& problem) {
-      throw alpha::Error(path + ": line " + std::to_string(number) + ": " + problem, alpha::ErrorKind::BadInput);
+    const auto fail = [&](const std::string& problem, alpha::ErrorKind kind) {
+      throw alpha::Error(path + ": line " + std::to_string(number) + ": " + problem, kind);
     };
     if (f.size() != expected)
-      fail(hole ? "expected VDWR ATOM RESIDUE RADIUS" : "expected RESIDUE ATOM RADIUS or element SYMBOL RADIUS");
+      fail(hole ? "expected VDWR ATOM RESIDUE RADIUS" : "expected RESIDUE ATOM RADIUS or element SYMBOL RADIUS",
+           alpha::ErrorKind::BadInput);
     const std::string& value = f.back();
     double r = 0;
     const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), r);
     if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(r) || r < 0)
-      fail("radius '" + value + "' is not a number >= 0");
+      fail("radius '" + value + "' is not a number >= 0", alpha::ErrorKind::BadInput);
     if (!hole && key == "ELEMENT") {
       out.elements.emplace_back(upper(f[1]), r);
       continue;

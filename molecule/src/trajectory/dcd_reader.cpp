@@ -27,14 +27,17 @@ constexpr double kAkmaPicoseconds = 0.04888821;  // CHARMM's time unit, ps
 class DcdReader : public CoordinateReader {
 public:
   explicit DcdReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-    if (!in_) fail("cannot open the file");
+    if (!in_) fail("cannot open the file", alpha::ErrorKind::BadInput);
     std::uint32_t first = 0;
-    if (!in_.read(reinterpret_cast<char*>(&first), 4)) fail("file is empty or shorter than a DCD header");
+    if (!in_.read(reinterpret_cast<char*>(&first), 4))
+      fail("file is empty or shorter than a DCD header", alpha::ErrorKind::BadInput);
     swap_ = first != 84;
-    if (swap_ && bswap_32(first) != 84) fail("not a DCD file (its first record is not 84 bytes)");
+    if (swap_ && bswap_32(first) != 84)
+      fail("not a DCD file (its first record is not 84 bytes)", alpha::ErrorKind::BadInput);
     in_.seekg(0);
     const std::string header = record("the header");
-    if (header.size() != 84 || header.compare(0, 4, "CORD") != 0) fail("not a DCD file (no CORD header)");
+    if (header.size() != 84 || header.compare(0, 4, "CORD") != 0)
+      fail("not a DCD file (no CORD header)", alpha::ErrorKind::BadInput);
     const auto word = [&](int k) { return int32(header.data() + 4 * k); };  // 1-based after "CORD"
     first_step_ = word(2);
     step_ = word(3);
@@ -53,9 +56,10 @@ public:
     }
     record("the title");
     const std::string n = record("the atom count");
-    if (n.size() != 4) fail("the atom count record is " + std::to_string(n.size()) + " bytes, not 4");
+    if (n.size() != 4)
+      fail("the atom count record is " + std::to_string(n.size()) + " bytes, not 4", alpha::ErrorKind::BadInput);
     const std::int32_t atoms = int32(n.data());
-    if (atoms <= 0) fail("atom count " + std::to_string(atoms));
+    if (atoms <= 0) fail("atom count " + std::to_string(atoms), alpha::ErrorKind::BadInput);
     atoms_ = std::size_t(atoms);
   }
 
@@ -71,7 +75,8 @@ public:
       const std::string r = record(where);
       if (r.size() != 4 * atoms_)
         fail(where + ": a coordinate record of " + std::to_string(r.size()) + " bytes, not " +
-             std::to_string(4 * atoms_) + " (" + std::to_string(atoms_) + " atoms)");
+                 std::to_string(4 * atoms_) + " (" + std::to_string(atoms_) + " atoms)",
+             alpha::ErrorKind::BadInput);
       for (std::size_t i = 0; i < atoms_; ++i) {
         std::uint32_t bits;
         std::memcpy(&bits, r.data() + 4 * i, 4);
@@ -86,8 +91,8 @@ public:
   }
 
 private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw alpha::Error(path_ + ": " + what, alpha::ErrorKind::BadInput);
+  [[noreturn]] void fail(const std::string& what, alpha::ErrorKind kind) const {
+    throw alpha::Error(path_ + ": " + what, kind);
   }
   std::int32_t int32(const char* p) const {
     std::uint32_t v;
@@ -97,14 +102,18 @@ private:
   // One Fortran record's bytes.
   std::string record(const std::string& what) {
     char count[4];
-    if (!in_.read(count, 4)) fail("truncated in " + what + " (no record length)");
+    if (!in_.read(count, 4)) fail("truncated in " + what + " (no record length)", alpha::ErrorKind::BadInput);
     const std::int32_t n = int32(count);
-    if (n < 0 || n > (1 << 30)) fail("corrupt record length " + std::to_string(n) + " in " + what);
+    if (n < 0 || n > (1 << 30))
+      fail("corrupt record length " + std::to_string(n) + " in " + what, alpha::ErrorKind::BadInput);
     std::string bytes(std::size_t(n), '\0');
-    if (!in_.read(bytes.data(), n)) fail("truncated in " + what + " (" + std::to_string(n) + "-byte record cut short)");
+    if (!in_.read(bytes.data(), n))
+      fail("truncated in " + what + " (" + std::to_string(n) + "-byte record cut short)", alpha::ErrorKind::BadInput);
     char end[4];
-    if (!in_.read(end, 4)) fail("truncated in " + what + " (no closing record length)");
-    if (int32(end) != n) fail("corrupt record in " + what + " (lengths " + std::to_string(n) + " and " + std::to_string(int32(end)) + ")");
+    if (!in_.read(end, 4)) fail("truncated in " + what + " (no closing record length)", alpha::ErrorKind::BadInput);
+    if (int32(end) != n)
+      fail("corrupt record in " + what + " (lengths " + std::to_string(n) + " and " + std::to_string(int32(end)) + ")",
+           alpha::ErrorKind::BadInput);
     return bytes;
   }
 
