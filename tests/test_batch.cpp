@@ -176,7 +176,7 @@ TEST_CASE("analysis: failures come with their category", "[batch]") {
   CHECK(kind_of(kData + "/1fkgA.pdb") == std::make_pair(molecule::FailureKind::LimitExceeded, true));
 }
 
-TEST_CASE("batch records: a line reads back the same; report_rows follows the report", "[batch]") {
+TEST_CASE("batch records: a line reads back the same; table_rows follows the report", "[batch]") {
   molecule::AnalysisOptions options;
   options.version = "test";
   const molecule::Analysis a = molecule::analyse(kData + "/1ytjA.pdb", options);
@@ -187,7 +187,7 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   r.key = molecule::batch_key({{"probe", 1.4}}, "test");
   r.status = "ok";
   r.seconds = 0.25;
-  r.rows = molecule::report_rows(a.report->json);
+  r.rows = molecule::table_rows(a.run());
   const std::string line = molecule::record_line(r);
   CHECK(line.find('\n') == std::string::npos);
   const molecule::BatchRecord back = molecule::parse_record(line);
@@ -204,4 +204,57 @@ TEST_CASE("batch records: a line reads back the same; report_rows follows the re
   CHECK(first[4] == a.report->json["sites"][0]["probability"]);
   CHECK_THROWS_AS(molecule::parse_record(line.substr(0, line.size() / 2)), alpha::Error);  // a cut line
   CHECK_THROWS_AS(molecule::parse_record("{}"), alpha::Error);
+}
+
+TEST_CASE("table rows: every value is report.json's", "[batch]") {
+  // The rows come from the typed results, the report from the same by its
+  // own code: read the report as the tables' columns name it.
+  using json = nlohmann::ordered_json;
+  const auto or_null = [](const json& o, const char* key) { return o.contains(key) ? o.at(key) : json(nullptr); };
+  const auto words = [](const json& items) {
+    std::string out;
+    for (const json& r : items) out += (out.empty() ? "" : " ") + (r.is_string() ? r : r.at("id")).get<std::string>();
+    return out;
+  };
+  molecule::AnalysisOptions options;
+  options.tunnels.pores = true;
+  std::size_t sites = 0, tunnels = 0, with_ligands = 0;
+  for (const std::string& file : {kAfPdb, kData + "/1UYD.pdb", std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb"}) {
+    INFO(file);
+    const molecule::Analysis a = molecule::analyse(file, options);
+    const json& report = a.report->json;
+    const json rows = molecule::table_rows(a.run());
+    const json& input = report.at("input");
+    const json& m = report.at("molecule");
+    CHECK(rows.at("structure") == json::array({input.at("format"), int(input.at("predicted") == true), m.at("atoms"),
+                                               m.at("pockets"), m.at("voids"), m.at("sites"), m.at("tunnels"),
+                                               m.at("sa_area"), m.at("sa_volume"), m.at("mean_plddt")}));
+    REQUIRE(rows.at("sites").size() == report.at("sites").size());
+    for (std::size_t i = 0; i < rows.at("sites").size(); ++i) {
+      const json& s = report.at("sites")[i];
+      const json& c = report.at(s.at("kind") == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
+      const json& center = s.at("center");
+      CHECK(rows.at("sites")[i] ==
+            json::array({s.at("rank"), s.at("kind"), s.at("cavity_rank"), c.at("score"), c.at("probability"),
+                         c.at("sa_volume"), c.at("ms_volume"), c.at("sa_area"), c.at("ms_area"), c.at("depth"),
+                         c.at("mouths"), c.at("mouth_area"), c.at("buriedness"), c.at("burial_atoms"),
+                         c.at("max_probe_radius"), center[0], center[1], center[2], s.at("mean_plddt"),
+                         c.at("lining_residues").size(), words(c.at("lining_residues")),
+                         s.at("ligands").empty() ? json(nullptr) : json(words(s.at("ligands")))}));
+      with_ligands += !s.at("ligands").empty();
+      ++sites;
+    }
+    REQUIRE(rows.at("tunnels").size() == report.at("tunnels").size());
+    for (std::size_t i = 0; i < rows.at("tunnels").size(); ++i) {
+      const json& t = report.at("tunnels")[i];
+      const json& center = t.at("bottleneck_center");
+      CHECK(rows.at("tunnels")[i] == json::array({t.at("rank"), t.at("kind"), t.at("bottleneck_radius"), center[0],
+                                                  center[1], center[2], t.at("length"), or_null(t, "birth_alpha_sq"),
+                                                  or_null(t, "death_alpha_sq"), words(t.at("lining_residues"))}));
+      ++tunnels;
+    }
+  }
+  CHECK(sites >= 10);
+  CHECK(tunnels >= 5);
+  CHECK(with_ligands >= 1);
 }

@@ -30,6 +30,7 @@
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
 #include "outputs/structure_copy.hpp"
+#include "outputs/tables.hpp"
 #include "mesh_checks.hpp"
 #include "point_sets.hpp"
 

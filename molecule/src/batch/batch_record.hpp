@@ -21,7 +21,7 @@ struct BatchRecord {
   std::string category;  // failures: failure_name(); "" when ok
   std::string message;   // failures: the one-line error
   double seconds = 0;    // wall-clock time of the structure (not in the tables: it varies)
-  // The structure's rows (report_rows, outputs/tables.hpp), without its id; null for failures.
+  // The structure's rows (table_rows, outputs/tables.hpp), without its id; null for failures.
   nlohmann::ordered_json rows;
 };
 

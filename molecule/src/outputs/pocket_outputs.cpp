@@ -161,7 +161,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
                       report_file_text(report));
   if (selection_.csv) {
     files.emplace_back("pockets.csv", pockets_csv(run));
-    files.emplace_back("sites.csv", sites_csv(structure_id(run.file), report));
+    files.emplace_back("sites.csv", sites_csv(structure_id(run.file), run));
   }
   std::optional<StructureCopy> copy;
   std::optional<ViewerScene> scene;

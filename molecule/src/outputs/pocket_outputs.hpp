@@ -2,7 +2,7 @@
 // The output directory of `alphapocket pockets`:
 //
 //   report.json   every result (pocket_report), indented
-//   pockets.csv   one row per pocket (pockets_csv)
+//   pockets.csv   one row per pocket (pockets_csv, outputs/tables.hpp)
 //   sites.csv     one row per binding site, pockets and voids: the rows
 //                 of batch's sites table (sites_csv)
 //   structure.cif the atoms searched and the ligands (structure_copy),
@@ -14,7 +14,8 @@
 //                 void_<rank>.<fmt> (the casts; pocket_meshes), an OBJ's
 //                 .mtl files, and meshlab.mlp, a MeshLab project opening
 //                 them all
-//   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv),
+//   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv;
+//                 like pockets.csv and sites.csv from outputs/tables.hpp),
 //   tunnels.pdb   the tunnels and pores (tunnel_pdb)
 //   report.html   the run in a browser, scene.mvsj its 3D scene as
 //                 MolViewSpec (report_page), viewer/ the viewer files the

@@ -8,7 +8,6 @@
 #include "alpha/error.hpp"
 #include "molecule/residues.hpp"
 #include "outputs/report_numbers.hpp"
-#include "outputs/tables.hpp"
 #include "molecule/ligand_sites.hpp"
 
 namespace molecule {
@@ -146,10 +145,7 @@ json site_list(const PocketRun& run) {
   std::size_t rank = 0;
   for (const Site& s : cavities.sites) {
     const Cavity& c = cavities.cavity(s);
-    json held = json::array();
     ++rank;
-    for (const LigandSite& l : ligands_of(run))
-      if (l.lies_in(rank)) held.push_back(ligand_id(run.structure->hetero_groups[l.group]));
     out.push_back({{"rank", rank},
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},
@@ -159,18 +155,12 @@ json site_list(const PocketRun& run) {
                    {"center", point(s.center)},
                    {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
                    {"lining_residues", lining_residues(run.structure->atoms, c.lining_atoms)},
-                   {"ligands", std::move(held)}});
+                   {"ligands", site_ligands(run, rank)}});
   }
   return out;
 }
 
 std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
-
-// The way through cycle k, or null when none was found.
-const TunnelPath* cycle_path(const PocketRun& run, std::size_t k) {
-  if (!run.cycle_paths || k >= run.cycle_paths->size() || (*run.cycle_paths)[k].profile.empty()) return nullptr;
-  return &(*run.cycle_paths)[k];
-}
 
 json profile_of(const TunnelPath& p) {
   json out = json::array();
@@ -225,11 +215,21 @@ json tunnel_list(const PocketRun& run) {
   return out;
 }
 
-// A number as report.json has it (the shortest text that reads back the
-// same).
-std::string csv_number(double x) { return json(x).dump(); }
-
 }  // namespace
+
+const TunnelPath* cycle_path(const PocketRun& run, std::size_t k) {
+  if (!run.cycle_paths || k >= run.cycle_paths->size() || (*run.cycle_paths)[k].profile.empty()) return nullptr;
+  return &(*run.cycle_paths)[k];
+}
+
+std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank) {
+  std::vector<std::string> out;
+  for (const LigandSite& l : ligands_of(run))
+    if (l.lies_in(rank)) out.push_back(ligand_id(run.structure->hetero_groups[l.group]));
+  return out;
+}
+
+json mean_plddt(const Structure& structure) { return mean_plddt(structure, all_atoms(structure.atoms.size())); }
 
 json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms) {
   if (!structure.report.predicted) return nullptr;
@@ -286,7 +286,7 @@ json pocket_report(const PocketRun& run) {
                    {"voids", run.search->cavities.voids.size()},
                    {"sites", run.search->cavities.sites.size()},
                    {"tunnels", run.search->cavities.tunnels.size()},
-                   {"mean_plddt", mean_plddt(*run.structure, all_atoms(run.structure->atoms.size()))},
+                   {"mean_plddt", mean_plddt(*run.structure)},
                    {"tunnel_paths", num_paths(run)}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
   return {
@@ -306,35 +306,6 @@ std::string report_file_text(const nlohmann::ordered_json& report) {
   return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
-std::string pockets_csv(const PocketRun& run) {
-  std::string out =
-      "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
-      "lining_residues,residues,mean_plddt\n";
-  const std::vector<Atom>& atoms = run.structure->atoms;
-  std::size_t rank = 0;
-  for (const Cavity& c : run.search->cavities.pockets) {
-    const std::vector<alpha::Index> residues = residues_of(atoms, c.lining_atoms);
-    std::string names;
-    for (const alpha::Index i : residues) {
-      if (!names.empty()) names += ' ';
-      names += residue_id(atoms[i]);
-    }
-    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' +
-           (std::isnan(c.probability) ? std::string() : csv_number(report_number::probability(c.probability)));
-    for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area),
-                           length(c.ms_area)})
-      out += ',' + csv_number(x);
-    out += ',' + std::to_string(c.mouths.size());
-    for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
-                           length(c.center.z)})
-      out += ',' + csv_number(x);
-    const json plddt = mean_plddt(*run.structure, c.lining_atoms);
-    out += ',' + std::to_string(residues.size()) + ',' + csv_field(names) + ',' +
-           (plddt.is_null() ? std::string() : plddt.dump()) + '\n';
-  }
-  return out;
-}
-
 }  // namespace molecule
 
 namespace molecule {
@@ -349,45 +320,6 @@ std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
       if (norm(x - cycle.bottleneck_center) < 1e-9) return i;
   }
   return std::size_t(-1);
-}
-
-std::string tunnels_csv(const PocketRun& run) {
-  std::string out =
-      "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
-      "lining_residues,residues\n";
-  const json report = tunnel_list(run);
-  for (const json& t : report) {
-    const auto num = [&](const json& x) { return x.is_null() ? std::string() : x.dump(); };
-    std::string names;
-    for (const json& r : t["lining_residues"]) {
-      if (!names.empty()) names += ' ';
-      names += r["id"].get<std::string>();
-    }
-    out += num(t["rank"]) + ',' + t["kind"].get<std::string>() + ',' +
-           csv_field(t.contains("start") && !t["start"].is_null() ? t["start"].get<std::string>() : "") + ',' +
-           num(t["bottleneck_radius"]);
-    for (const json& x : t["bottleneck_center"]) out += ',' + num(x);
-    out += ',' + num(t["length"]) + ',' + (t.contains("curvature") ? num(t["curvature"]) : "") + ',' +
-           (t.contains("cost") ? num(t["cost"]) : "") + ',' + std::to_string(t["lining_residues"].size()) + ',' +
-           csv_field(names) + '\n';
-  }
-  return out;
-}
-
-std::string tunnel_profiles_csv(const PocketRun& run) {
-  std::string out = "tunnel,distance,x,y,z,radius\n";
-  const auto rows = [&](std::size_t rank, const TunnelPath& p) {
-    for (const ProfilePoint& q : p.profile) {
-      out += std::to_string(rank);
-      for (const double x : {q.distance, q.x.x, q.x.y, q.x.z, q.radius}) out += ',' + csv_number(length(x));
-      out += '\n';
-    }
-  };
-  const std::size_t cycles = run.search->cavities.tunnels.size();
-  for (std::size_t k = 0; k < cycles; ++k)
-    if (const TunnelPath* way = cycle_path(run, k)) rows(k + 1, *way);
-  for (std::size_t i = 0; i < num_paths(run); ++i) rows(cycles + i + 1, (*run.paths)[i]);
-  return out;
 }
 
 }  // namespace molecule

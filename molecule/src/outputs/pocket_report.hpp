@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The machine-readable results of `alphapocket pockets`: report.json (every
-// number of the run, schema documented in docs/outputs.md, "report.json")
-// and pockets.csv (one row per pocket, for spreadsheets and scripts).
+// number of the run, schema documented in docs/outputs.md, "report.json");
+// the tables (pockets.csv, sites.csv, tunnels.csv) are outputs/tables.hpp's.
 //
 // Lengths in A, areas in A^2, volumes in A^3, rounded to 3 decimals (1e-3 A
 // is far below the precision of any structure); scores and buriedness to
@@ -55,6 +55,8 @@ struct PocketRun {
 // atoms, one value per residue (its first atom's: a model gives all atoms
 // of a residue the same), rounded to 3 decimals; null for other structures.
 nlohmann::ordered_json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms);
+// The same over all atoms.
+nlohmann::ordered_json mean_plddt(const Structure& structure);
 
 // Mesh file of a cavity inside the output directory, e.g.
 // "meshes/pocket_1.ply"; kind is "pocket" or "void". The molecular
@@ -69,12 +71,12 @@ struct Report {
 };
 // report.json's text: indented by 2, invalid UTF-8 in names replaced (U+FFFD).
 std::string report_file_text(const nlohmann::ordered_json& report);
-std::string pockets_csv(const PocketRun& run);
-// tunnels.csv (one row per entry of report.json's tunnels) and
-// tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,
-// one row per profile point of each cycle's way through, tunnel and pore).
-std::string tunnels_csv(const PocketRun& run);
-std::string tunnel_profiles_csv(const PocketRun& run);
+// The way through cycle k of search->cavities.tunnels, or null when none
+// was found.
+const TunnelPath* cycle_path(const PocketRun& run, std::size_t k);
+// The ids of the hetero groups that lie in the site of this rank (from 1),
+// e.g. "A:HEM:201" (LigandSite::lies_in).
+std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank);
 // The index into *run.paths of the first path that runs through a cycle's
 // bottleneck (crosses its killing triangle, or passes its bottleneck
 // centre), or npos.

@@ -1,30 +1,74 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "outputs/tables.hpp"
 
+#include <cmath>
+
+#include "molecule/residues.hpp"
+#include "outputs/report_numbers.hpp"
+
 namespace molecule {
 namespace {
 
 using json = nlohmann::ordered_json;
 constexpr ColumnType T = ColumnType::Text, I = ColumnType::Integer, R = ColumnType::Real;
 
-json value_or_null(const json& object, const char* key) {
-  const auto it = object.find(key);
-  return it == object.end() ? json(nullptr) : *it;
+using report_number::length;
+using report_number::score;
+
+// The residues of these atoms by id (residue_id), one space between them.
+std::string residue_words(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
+  std::string out;
+  for (const alpha::Index i : residues_of(atoms, lining)) {
+    if (!out.empty()) out += ' ';
+    out += residue_id(atoms[i]);
+  }
+  return out;
 }
 
-// Strings, or objects' "id"s, as one space-separated list.
-std::string words(const json& items) {
-  std::string out;
-  for (const json& r : items) {
-    if (!out.empty()) out += ' ';
-    out += (r.is_string() ? r : r.at("id")).get<std::string>();
+// The lining_residues and residues columns: how many residues, and their ids.
+std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
+  return ',' + std::to_string(residues_of(atoms, lining).size()) + ',' + csv_field(residue_words(atoms, lining));
+}
+
+// Probabilities to 4 decimals; null where none was computed (find_cavities alone).
+json probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
+
+// A number as report.json has it (the shortest text that reads back the
+// same); null is empty.
+std::string csv_number(const json& x) { return x.is_null() ? std::string() : x.dump(); }
+
+// One entry of report.json's tunnels as the tables have it: the cycles
+// first (rank = their tunnel_N in pockets.pml and pockets.pdb), then the
+// tunnels and pores.
+struct TunnelEntry {
+  const char* kind;
+  std::string start;  // a tunnel's start; empty for cycles and pores
+  double bottleneck_radius;
+  alpha::Vec3 bottleneck;
+  json length, curvature, cost, birth_alpha_sq, death_alpha_sq;  // null where the kind has none
+  const std::vector<alpha::Index>* lining_atoms;
+};
+
+std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
+  std::vector<TunnelEntry> out;
+  const std::vector<Tunnel>& cycles = run.search->cavities.tunnels;
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    const Tunnel& t = cycles[k];
+    const TunnelPath* way = cycle_path(run, k);
+    out.push_back({"cycle", "", t.bottleneck_radius, t.bottleneck_center, way ? json(length(way->length)) : json(),
+                   json(), json(), t.birth_alpha_sq, t.death_alpha_sq, &t.lining_atoms});
   }
+  if (run.paths)
+    for (const TunnelPath& p : *run.paths)
+      out.push_back({p.pore ? "pore" : "tunnel", p.pore ? "" : run.tunnel_starts.at(p.start), p.bottleneck_radius,
+                     p.bottleneck, length(p.length), std::isfinite(p.curvature) ? json(length(p.curvature)) : json(),
+                     score(p.cost), json(), json(), &p.lining_atoms});
   return out;
 }
 
 }  // namespace
 
-// The documented schemas (docs/outputs.md); the rows of report_rows() follow the leading columns.
+// The documented schemas (docs/outputs.md); the rows of table_rows() follow the leading columns.
 const Table kStructuresTable{"structures",
                              {{"id", T}, {"path", T}, {"status", T}, {"format", T}, {"predicted", I}, {"atoms", I},
                               {"pockets", I}, {"voids", I}, {"sites", I}, {"tunnels", I}, {"sa_area", R},
@@ -47,31 +91,33 @@ const Table kTunnelsTable{"tunnels",
                           "structure_id, tunnel_rank"};
 const Table kFailuresTable{"failures", {{"id", T}, {"path", T}, {"category", T}, {"message", T}}, 4, "id"};
 
-json report_rows(const json& report) {
-  const json& input = report.at("input");
-  const json& m = report.at("molecule");
-  json structure = json::array({input.at("format"), int(value_or_null(input, "predicted") == true),
-                                m.at("atoms"), m.at("pockets"), m.at("voids"), m.at("sites"), m.at("tunnels"),
-                                m.at("sa_area"), m.at("sa_volume"), value_or_null(m, "mean_plddt")});
+json table_rows(const PocketRun& run) {
+  const Structure& st = *run.structure;
+  const Cavities& cavities = run.search->cavities;
+  json structure = json::array({st.report.format, int(st.report.predicted), st.atoms.size(), cavities.pockets.size(),
+                                cavities.voids.size(), cavities.sites.size(), cavities.tunnels.size(),
+                                length(cavities.sa_area), length(cavities.sa_volume), mean_plddt(st)});
   json sites = json::array();
-  for (const json& s : report.at("sites")) {
-    const std::string kind = s.at("kind");
-    const json& c = report.at(kind == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
-    const json& center = s.at("center");  // the site's (its cluster's), not always its cavity's
-    sites.push_back({s.at("rank"), kind, s.at("cavity_rank"), c.at("score"), c.at("probability"), c.at("sa_volume"), c.at("ms_volume"),
-                     c.at("sa_area"), c.at("ms_area"), c.at("depth"), c.at("mouths"), c.at("mouth_area"),
-                     c.at("buriedness"), c.at("burial_atoms"), c.at("max_probe_radius"), center[0], center[1],
-                     center[2], value_or_null(s, "mean_plddt"), c.at("lining_residues").size(),
-                     words(c.at("lining_residues")),
-                     s.at("ligands").empty() ? json(nullptr) : json(words(s.at("ligands")))});
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    const Cavity& c = cavities.cavity(s);
+    std::string ligands;
+    for (const std::string& id : site_ligands(run, ++rank)) ligands += (ligands.empty() ? "" : " ") + id;
+    // The centre is the site's (its cluster's), not always its cavity's.
+    sites.push_back(json::array(
+        {rank, s.is_void ? "void" : "pocket", s.index + 1, score(c.score), probability(c.probability),
+         length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area), length(c.depth),
+         c.mouths.size(), length(c.mouth_area), score(c.buriedness), c.burial_atoms, length(c.max_probe_radius),
+         length(s.center.x), length(s.center.y), length(s.center.z), mean_plddt(st, c.lining_atoms),
+         residues_of(st.atoms, c.lining_atoms).size(), residue_words(st.atoms, c.lining_atoms),
+         ligands.empty() ? json(nullptr) : json(ligands)}));
   }
   json tunnels = json::array();
-  for (const json& t : report.at("tunnels")) {
-    const json& center = t.at("bottleneck_center");
-    tunnels.push_back({t.at("rank"), t.at("kind"), t.at("bottleneck_radius"), center[0], center[1], center[2],
-                       t.at("length"), value_or_null(t, "birth_alpha_sq"), value_or_null(t, "death_alpha_sq"),
-                       words(t.at("lining_residues"))});
-  }
+  rank = 0;
+  for (const TunnelEntry& t : tunnel_entries(run))
+    tunnels.push_back(json::array({++rank, t.kind, length(t.bottleneck_radius), length(t.bottleneck.x),
+                                   length(t.bottleneck.y), length(t.bottleneck.z), t.length, t.birth_alpha_sq,
+                                   t.death_alpha_sq, residue_words(st.atoms, *t.lining_atoms)}));
   return {{"structure", std::move(structure)}, {"sites", std::move(sites)}, {"tunnels", std::move(tunnels)}};
 }
 
@@ -92,19 +138,72 @@ std::string table_value(const json& v, bool tsv) {
   return s;
 }
 
-std::string sites_csv(const std::string& structure_id, const json& report) {
+std::string sites_csv(const std::string& structure_id, const PocketRun& run) {
   std::string out;
   for (const Column& c : kSitesTable.columns) {
     if (!out.empty()) out += ',';
     out += c.name;
   }
   out += '\n';
-  const json rows = report_rows(report);
+  const json rows = table_rows(run);
   for (const json& row : rows.at("sites")) {
     out += csv_field(structure_id);
     for (const json& v : row) out += ',' + table_value(v, false);
     out += '\n';
   }
+  return out;
+}
+
+std::string pockets_csv(const PocketRun& run) {
+  std::string out =
+      "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
+      "lining_residues,residues,mean_plddt\n";
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  std::size_t rank = 0;
+  for (const Cavity& c : run.search->cavities.pockets) {
+    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' + csv_number(probability(c.probability));
+    for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area)})
+      out += ',' + csv_number(x);
+    out += ',' + std::to_string(c.mouths.size());
+    for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
+                           length(c.center.z)})
+      out += ',' + csv_number(x);
+    out += residue_columns(atoms, c.lining_atoms) + ',' + csv_number(mean_plddt(*run.structure, c.lining_atoms)) +
+           '\n';
+  }
+  return out;
+}
+
+std::string tunnels_csv(const PocketRun& run) {
+  std::string out =
+      "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
+      "lining_residues,residues\n";
+  const std::vector<Atom>& atoms = run.structure->atoms;
+  std::size_t rank = 0;
+  for (const TunnelEntry& t : tunnel_entries(run)) {
+    out += std::to_string(++rank) + ',' + t.kind + ',' + csv_field(t.start);
+    for (const double x : {t.bottleneck_radius, t.bottleneck.x, t.bottleneck.y, t.bottleneck.z})
+      out += ',' + csv_number(length(x));
+    out += ',' + csv_number(t.length) + ',' + csv_number(t.curvature) + ',' + csv_number(t.cost) +
+           residue_columns(atoms, *t.lining_atoms) + '\n';
+  }
+  return out;
+}
+
+std::string tunnel_profiles_csv(const PocketRun& run) {
+  std::string out = "tunnel,distance,x,y,z,radius\n";
+  const auto rows = [&](std::size_t rank, const TunnelPath& p) {
+    for (const ProfilePoint& q : p.profile) {
+      out += std::to_string(rank);
+      for (const double x : {q.distance, q.x.x, q.x.y, q.x.z, q.radius}) out += ',' + csv_number(length(x));
+      out += '\n';
+    }
+  };
+  const std::size_t cycles = run.search->cavities.tunnels.size();
+  for (std::size_t k = 0; k < cycles; ++k)
+    if (const TunnelPath* way = cycle_path(run, k)) rows(k + 1, *way);
+  if (run.paths)
+    for (std::size_t i = 0; i < run.paths->size(); ++i) rows(cycles + i + 1, (*run.paths)[i]);
   return out;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The tables of the results, one schema each, and the rows a report gives
-// them: `pockets` writes its structure's sites.csv from them, `batch` the
+// The tables of the results, one schema each, and their rows, made from a
+// run's typed results (numbers rounded as in report.json,
+// outputs/report_numbers.hpp): `pockets` writes its structure's sites.csv,
+// pockets.csv, tunnels.csv and tunnel_profiles.csv from them, `batch` the
 // whole run's structures.csv, sites.csv, tunnels.csv, failures.tsv and
 // alphapocket.sqlite (batch/batch_tables.hpp). So a batch run's sites.csv
 // is its structures' sites.csv files joined. Schemas: docs/outputs.md.
@@ -10,6 +12,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "outputs/pocket_report.hpp"
 
 namespace molecule {
 
@@ -27,10 +31,11 @@ struct Table {
 
 extern const Table kStructuresTable, kSitesTable, kTunnelsTable, kFailuresTable;
 
-// The rows of the tables a report gives, without the structure's id:
+// The rows of the tables a run gives, without the structure's id:
 // {"structure": [...], "sites": [[...], ...], "tunnels": [[...], ...]}, in
-// the column order of each table after its leading columns.
-nlohmann::ordered_json report_rows(const nlohmann::ordered_json& report);
+// the column order of each table after its leading columns. JSON, as
+// batch keeps them (batch/batch_record.hpp).
+nlohmann::ordered_json table_rows(const PocketRun& run);
 
 // A CSV field: quoted (quotes doubled) when it holds a separator, a quote
 // or a line break.
@@ -41,7 +46,15 @@ std::string csv_field(const std::string& s);
 std::string table_value(const nlohmann::ordered_json& value, bool tsv);
 
 // sites.csv of one structure: the header and the rows the sites table has
-// for it (from its report.json).
-std::string sites_csv(const std::string& structure_id, const nlohmann::ordered_json& report);
+// for it.
+std::string sites_csv(const std::string& structure_id, const PocketRun& run);
+
+// pockets.csv: one row per pocket, for spreadsheets and scripts.
+std::string pockets_csv(const PocketRun& run);
+// tunnels.csv (one row per entry of report.json's tunnels) and
+// tunnel_profiles.csv (tunnel, distance, x, y, z, radius: CAVER's columns,
+// one row per profile point of each cycle's way through, tunnel and pore).
+std::string tunnels_csv(const PocketRun& run);
+std::string tunnel_profiles_csv(const PocketRun& run);
 
 }  // namespace molecule
