@@ -5,7 +5,8 @@
 // random points moved by a fraction of their mean nearest-neighbour
 // distance, or the frames of a trajectory (a multi-frame .gro file, as
 // dynamic_update_md.sh writes: atoms weighted by their radius squared).
-// Usage: bench_dynamic_update [reps_1e5 reps_1e6] | --frames FILE.gro [reps]. See README.md.
+// Usage: bench_dynamic_update [reps_1e5 reps_1e6 [N: that size, small moves]] | --frames FILE.gro [reps]
+// | --one N SHARE BY (one update, e.g. under callgrind). See README.md.
 #include <time.h>
 #include <cmath>
 #include <cstdio>
@@ -55,21 +56,25 @@ double mean_nearest(const alpha::Triangulation& t) {
   return sum / count;
 }
 
-void random_sets(int reps_small, int reps_large) {
+// With `only` (a point count), that size alone, the small moves (up to 0.2 NN) and no complex.
+void random_sets(int reps_small, int reps_large, std::size_t only) {
   std::printf("%8s %6s %6s %4s %9s %9s %7s %10s %8s %8s %7s %7s\n", "n", "moved", "by", "reps", "build s", "update s",
               "ratio", "relocated", "flips/n", "rebuilt", "complex", "c/build");
   struct Move {
     double share, by;  // of the points; in mean nearest-neighbour distances
   };
   for (const std::size_t n : {std::size_t(100000), std::size_t(1000000)}) {
+    if (only && n != only) continue;
     const std::vector<Vec3> start = testing::random_points(n, 1);
     const alpha::Triangulation t0(start);
     const double nn = mean_nearest(t0);
     const int reps = n > 100000 ? reps_large : reps_small;
     std::vector<double> complex;
-    for (int r = 0; r < reps; ++r) complex.push_back(seconds_of([&] { alpha::AlphaComplex k(t0); }));
+    for (int r = 0; r < (only ? 1 : reps); ++r)
+      complex.push_back(only ? 0.0 : seconds_of([&] { alpha::AlphaComplex k(t0); }));
     for (const Move move : {Move{1, 0.05}, Move{1, 0.2}, Move{1, 0.5}, Move{0.1, 0.05}, Move{0.1, 0.2},
-                            Move{0.1, 0.5}, Move{0.01, 0.5}, Move{0.01, 2}}) {
+                            Move{0.1, 0.5}, Move{0.01, 0.05}, Move{0.01, 0.2}, Move{0.01, 0.5}, Move{0.01, 2}}) {
+      if (only && move.by > 0.2) continue;
       std::vector<double> build, update;
       double relocated = 0, flips = 0;
       int rebuilt = 0;
@@ -172,10 +177,30 @@ void trajectory(const char* path, int reps) {
 
 }  // namespace
 
+// One update of n random points, a share of them moved by `by` NN: the
+// update alone, for callgrind (--toggle-collect=*move_points*).
+void one(std::size_t n, double share, double by) {
+  const std::vector<Vec3> start = testing::random_points(n, 1);
+  alpha::Triangulation t(start);
+  const std::vector<Vec3> moved = testing::jitter(start, by * mean_nearest(t), 100);
+  std::vector<Index> ids;
+  std::vector<Vec3> to;
+  for (Index i = 0; i < n; i += Index(1 / share)) ids.push_back(i), to.push_back(moved[i]);
+  alpha::UpdateReport report;
+  const double s = seconds_of([&] { report = t.move_points(ids, to); });
+  std::printf("relocated %zu, flips %zu, rebuilt %d, %.4f s\n", report.relocated,
+              report.flips23 + report.flips32 + report.flips41, int(report.rebuilt), s);
+}
+
 int main(int argc, char** argv) {
+  if (argc > 4 && std::strcmp(argv[1], "--one") == 0) {
+    one(std::size_t(std::atof(argv[2])), std::atof(argv[3]), std::atof(argv[4]));
+    return 0;
+  }
   if (argc > 2 && std::strcmp(argv[1], "--frames") == 0) {
     trajectory(argv[2], argc > 3 ? std::atoi(argv[3]) : 50);
     return 0;
   }
-  random_sets(argc > 1 ? std::atoi(argv[1]) : 5, argc > 2 ? std::atoi(argv[2]) : 3);
+  random_sets(argc > 1 ? std::atoi(argv[1]) : 5, argc > 2 ? std::atoi(argv[2]) : 3,
+              argc > 3 ? std::size_t(std::atof(argv[3])) : 0);
 }

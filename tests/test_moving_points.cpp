@@ -41,6 +41,9 @@ void require_fresh(const Triangulation& t) {
   for (Index i = 0; i < t.num_points(); ++i) {
     REQUIRE(t.status(i) == fresh.status(i));
     REQUIRE(t.representative(i) == fresh.representative(i));
+    // The update keeps each vertex's link to a cell of its own.
+    if (t.status(i) == PointStatus::vertex) REQUIRE(t.index_of(t.incident_cell(i), i) >= 0);
+    else REQUIRE(t.incident_cell(i) == kNone);
   }
   REQUIRE(t.num_vertices() == fresh.num_vertices());
   REQUIRE(t.num_hidden() == fresh.num_hidden());
@@ -241,6 +244,46 @@ TEST_CASE("duplicates: made, split and moved", "[dynamic]") {
     const std::vector<Vec3> moved = testing::jitter(p, 0.02, 3);
     for (Index i = 30; i < 70; ++i) ids.push_back(i), to.push_back(moved[i]);
     REQUIRE_FALSE(t.move_points(ids, to).rebuilt);
+    require_fresh(t);
+  }
+}
+
+TEST_CASE("moves onto another point's place are found without a full scan: rebuilt, merged", "[dynamic]") {
+  const std::vector<Vec3> p = testing::random_points(1500, 21);
+  const std::vector<double> w = testing::random_weights(p.size(), 22, 0.0, 0.02);
+  Triangulation t(p, w);
+  Index hidden = kNone, vertex = kNone, far = kNone;
+  for (Index i = 0; i < p.size(); ++i) {
+    if (t.status(i) == PointStatus::hidden && hidden == kNone) hidden = i;
+    else if (t.status(i) == PointStatus::vertex) (vertex == kNone ? vertex : far) = i;
+  }
+  REQUIRE(hidden != kNone);
+  const auto move_one = [&](Index i, Vec3 to) {
+    const Index ids[] = {i};
+    const Vec3 where[] = {to};
+    const double weight[] = {w[i]};
+    return t.move_points(ids, where, weight);
+  };
+  SECTION("a vertex onto a hidden point") {
+    REQUIRE(move_one(far, p[hidden]).rebuilt);
+    REQUIRE(t.num_duplicates() == 1);
+    require_fresh(t);
+  }
+  SECTION("a hidden point onto a vertex") {
+    REQUIRE(move_one(hidden, p[vertex]).rebuilt);
+    REQUIRE(t.num_duplicates() == 1);
+    require_fresh(t);
+  }
+  SECTION("two points onto one new place") {
+    const Index ids[] = {vertex, far};
+    const Vec3 where[] = {Vec3{0.5, 0.5, 0.5}, Vec3{0.5, 0.5, 0.5}};
+    const double weights[] = {w[vertex], w[far]};
+    REQUIRE(t.move_points(ids, where, weights).rebuilt);
+    REQUIRE(t.num_duplicates() == 1);
+    require_fresh(t);
+  }
+  SECTION("a vertex next to another, not onto it: local") {
+    REQUIRE_FALSE(move_one(far, p[vertex] + Vec3{1e-9, 0, 0}).rebuilt);
     require_fresh(t);
   }
 }

@@ -33,9 +33,9 @@
 namespace alpha {
 namespace {
 
-// Whether a point of `moved` has the coordinates of another point (a fresh
-// build would merge them as duplicates). Open addressing on the moved ones.
-bool coincide(const std::vector<Vec3>& points, const std::vector<Index>& moved, const std::vector<char>& is_moved) {
+// Whether a point of `moved` has the coordinates of another one of them or
+// of a point of `others`. Open addressing on the moved ones.
+bool coincide_with(const std::vector<Vec3>& points, const std::vector<Index>& moved, const std::vector<Index>& others) {
   const int bits = std::bit_width(2 * moved.size() + 1);
   const std::size_t mask = (std::size_t(1) << bits) - 1;
   const auto hash = [&](const Vec3& p) {
@@ -51,12 +51,19 @@ bool coincide(const std::vector<Vec3>& points, const std::vector<Index>& moved, 
       if (points[table[h]] == points[i]) return true;
     table[h] = i;
   }
-  for (Index i = 0; i < points.size(); ++i) {
-    if (is_moved[i]) continue;
+  for (Index i : others)
     for (std::size_t h = hash(points[i]); table[h] != kNone; h = (h + 1) & mask)
       if (points[table[h]] == points[i]) return true;
-  }
   return false;
+}
+
+// Whether a point of `moved` has the coordinates of another point (a fresh
+// build would merge them as duplicates).
+bool coincide_any(const std::vector<Vec3>& points, const std::vector<Index>& moved, const std::vector<char>& is_moved) {
+  std::vector<Index> others;
+  for (Index i = 0; i < points.size(); ++i)
+    if (!is_moved[i]) others.push_back(i);
+  return coincide_with(points, moved, others);
 }
 
 // A facet as three vertex ids rotated to put the smallest first: the same
@@ -72,18 +79,39 @@ FacetKey facet_key(Index a, Index b, Index c) {
 
 class Triangulation::Updater {
 public:
-  // before / before_weights: the values the cells are regular for; the
-  // triangulation already holds the new ones.
-  Updater(Triangulation& t, std::vector<Vec3> before, std::vector<double> before_weights)
-      : t_(t), before_(std::move(before)), before_w_(std::move(before_weights)) {}
+  explicit Updater(Triangulation& t) : t_(t) {}
 
-  // Repairs after the points `moved` changed; false when it cannot be done
-  // locally (the cells are then unusable: the caller builds afresh).
-  bool move(const std::vector<Index>& moved) {
+  // Repairs after the points `moved` changed (the triangulation holds their
+  // new values; `old_points` and `old_weights`, in the same order, the ones
+  // the cells are regular for); false when it cannot be done locally (the
+  // cells are then unusable: the caller builds afresh, from the new values).
+  bool move(const std::vector<Index>& moved, std::vector<Vec3> old_points, std::vector<double> old_weights) {
     const std::size_t n = t_.points_.size();
     is_moved_.assign(n, 0);
     for (Index i : moved) is_moved_[i] = 1;
-    if (involves_duplicates(moved) || coincide(t_.points_, moved, is_moved_)) return false;
+    old_p_ = std::move(old_points), old_w_ = std::move(old_weights);
+    new_p_.resize(moved.size()), new_w_.resize(old_w_.size());
+    slot_.assign(n, kNone);
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      slot_[moved[k]] = Index(k), new_p_[k] = t_.points_[moved[k]];
+      if (!new_w_.empty()) new_w_[k] = t_.weights_[moved[k]];
+    }
+    if (involves_duplicates(moved) || coincide(moved)) return false;
+    const bool mended = mend(moved);
+    for (Index u : pending_) values(u, new_p_, new_w_);  // the vertices sent back: their new values again
+    if (!mended) return false;
+    // (4) The vertices taken out go in at their new places, and every
+    // hidden point is tested again.
+    std::vector<Index> again;
+    for (Index i = 0; i < n; ++i)
+      if (removed_[i] || t_.status_[i] == PointStatus::hidden) again.push_back(i);
+    return reinsert(std::move(again));
+  }
+
+  // Steps (1) to (3) of a move: the moved vertices sent back are out, the
+  // others in place at their new values.
+  bool mend(const std::vector<Index>& moved) {
+    const std::size_t n = t_.points_.size();
     removed_.assign(n, 0);
     reverted_.assign(n, 0);
     cell_stamp_.assign(t_.cells_.size(), 0);
@@ -99,24 +127,36 @@ public:
     // kMaxShare of the points sent back, taking them out and inserting
     // them costs more than a rebuild: stop as soon as that is passed (a
     // few always go: on a small set either costs little).
-    Kernel now = t_.kernel();
+    Kernel now = t_.kernel();  // reads the values as they change (mixed from step 2 on)
     limit_ = std::max(n / kMaxShare, kMinLimit);
-    for (Index c = 0; c < t_.cells_.size() && pending_.size() <= limit_; ++c)
-      if (touched(c)) check(now, c, [&](Index other) { return other < c || !touched(other); });
+    const auto check_touched = [&](Index c) { check(now, c, [&](Index other) { return other < c || !touched(other); }); };
+    if (moved.size() * kStarShare >= n) {  // most cells hold one: all, in memory order
+      for (Index c = 0; c < t_.cells_.size() && pending_.size() <= limit_; ++c)
+        if (touched(c)) check_touched(c);
+    } else {  // the cells of the moved vertices' stars, in memory order
+      std::vector<char> seen(t_.cells_.size(), 0);
+      std::vector<Index> cells, star;
+      for (Index u : moved) {
+        if (t_.status_[u] != PointStatus::vertex) continue;
+        star_of(u, star);
+        for (Index c : star)
+          if (!seen[c]) seen[c] = 1, cells.push_back(c);
+      }
+      std::sort(cells.begin(), cells.end());
+      for (std::size_t k = 0; k < cells.size() && pending_.size() <= limit_; ++k) check_touched(cells[k]);
+    }
     if (pending_.size() > limit_) return false;
     // (2) The moved vertices of what failed go back to their old values,
     // and so do those of what then fails around them, and the failing
     // facets between positive cells are flipped; where no flip mends one
     // (yet), a moved vertex of it goes back too, and so on: the cells are
     // then regular for these mixed values.
-    at_ = t_.points_, at_w_ = t_.weights_;
-    Kernel mixed(at_.data(), at_w_.empty() ? nullptr : at_w_.data());
+    Kernel& mixed = now;
     std::vector<Index> star;
     for (std::size_t k = 0;;) {
       for (; k < pending_.size() && pending_.size() <= limit_; ++k) {
         const Index u = pending_[k];
-        at_[u] = before_[u];
-        if (!at_w_.empty()) at_w_[u] = before_w_[u];
+        values(u, old_p_, old_w_);
         reverted_[u] = 1;
         if (t_.status_[u] != PointStatus::vertex) continue;  // hidden by a 4-1 flip: in no cell
         star_of(u, star);
@@ -137,13 +177,8 @@ public:
       if (stuck_ || pending_.size() == sent) return false;
     }
     // (3) Taking them out leaves the regular triangulation of the other
-    // vertices at their new values; (4) they go in at their new places, and
-    // every hidden point is tested again.
-    if (!take_out(pending_)) return false;
-    std::vector<Index> again;
-    for (Index i = 0; i < n; ++i)
-      if (removed_[i] || t_.status_[i] == PointStatus::hidden) again.push_back(i);
-    return reinsert(std::move(again));
+    // vertices at their new values.
+    return take_out(pending_);
   }
 
   // Takes the vertices `ids` out for good (hidden ones have nothing to do);
@@ -154,7 +189,6 @@ public:
     if (involves_duplicates(ids)) return false;
     removed_.assign(n, 0);
     cell_stamp_.assign(t_.cells_.size(), 0);
-    at_ = before_, at_w_ = before_w_;
     for (Index i : ids) removed_[i] = 1;  // before hidden_: none of them comes back
     for (Index i = 0; i < n; ++i)
       if (t_.status_[i] == PointStatus::hidden && !removed_[i]) hidden_.push_back(i);
@@ -173,7 +207,7 @@ public:
     std::vector<Index> added(n - first);
     std::iota(added.begin(), added.end(), first);
     for (Index i : added) is_moved_[i] = 1;
-    if (coincide(t_.points_, added, is_moved_)) return false;
+    if (coincide_any(t_.points_, added, is_moved_)) return false;
     removed_.assign(n, 0);
     return reinsert(std::move(added));
   }
@@ -189,19 +223,83 @@ private:
   static constexpr std::uint32_t kDead = ~0u;
   static constexpr std::size_t kMaxShare = 32;  // of the points taken out and inserted, at most 1/kMaxShare
   static constexpr std::size_t kMinLimit = 64;   // or this many
+  static constexpr std::size_t kStarShare = 8;   // from 1/kStarShare of the points moved, check all cells
   std::size_t limit_ = 0;
   Triangulation& t_;
-  std::vector<Vec3> before_;
-  std::vector<double> before_w_;
-  std::vector<Vec3> at_;  // the values the cells are regular for, which take_out uses
-  std::vector<double> at_w_;
+  // The moved points' old and new values, and each one's place in them (kNone: not moved).
+  std::vector<Index> slot_;
+  std::vector<Vec3> old_p_, new_p_;
+  std::vector<double> old_w_, new_w_;
   bool stuck_ = false;
   std::vector<Index> flip_queue_;  // cells that may have a facet to flip
   std::vector<char> is_moved_, removed_, reverted_, pending_mark_;
   std::vector<Index> hidden_, pending_, free_;
   std::vector<std::uint32_t> cell_stamp_;  // kDead, else the last take_out that saw it
   std::uint32_t stamp_ = 0;
+  std::uint32_t walk_ = 0x9e3779b9u;  // locate's random choices
   std::size_t relocated_ = 0, reinserted_ = 0, flips23_ = 0, flips32_ = 0, flips41_ = 0;
+
+  // Gives the moved point u its values in `p` and `w` (old or new).
+  void values(Index u, const std::vector<Vec3>& p, const std::vector<double>& w) {
+    t_.points_[u] = p[slot_[u]];
+    if (!w.empty()) t_.weights_[u] = w[slot_[u]];
+  }
+
+  // Whether a moved point now has the coordinates of another point (a
+  // fresh build would merge them as duplicates). Moved points against each
+  // other and against the hidden ones by a hash of their coordinates; against
+  // the vertices left in place by locating each new place among the old
+  // values: a point at a vertex lies in the closure of a cell only if the
+  // vertex is the cell's. When most points move, all by the hash.
+  bool coincide(const std::vector<Index>& moved) {
+    const auto& points = t_.points_;
+    if (moved.size() * kStarShare >= points.size()) return coincide_any(points, moved, is_moved_);
+    std::vector<Index> hidden;
+    for (Index i = 0; i < points.size(); ++i)
+      if (!is_moved_[i] && t_.status_[i] == PointStatus::hidden) hidden.push_back(i);
+    if (coincide_with(points, moved, hidden)) return true;
+    for (Index u : moved) values(u, old_p_, old_w_);
+    bool found = false;
+    Kernel old = t_.kernel();
+    Index start = 0;  // the cells are compact: every id is a cell
+    for (std::size_t k = 0; k < moved.size() && !found; ++k) {
+      if (t_.status_[moved[k]] == PointStatus::vertex) start = t_.vertex_cell_[moved[k]];  // else from the last
+      const Index c = locate(old, new_p_[k], start);
+      if (c == kNone) continue;  // outside the hull: at no vertex
+      for (Index v : t_.cells_[c].v)
+        if (v != kInfinite && !is_moved_[v] && points[v] == new_p_[k]) found = true;
+    }
+    for (Index u : moved) values(u, new_p_, new_w_);
+    return found;
+  }
+
+  // A visibility walk (randomised: it ends in a regular triangulation) from
+  // cell `start` to a finite cell whose closure holds q; kNone when q lies
+  // beyond the hull.
+  Index locate(Kernel& kernel, const Vec3& q, Index start) {
+    Index c = start, previous = kNone;
+    for (;;) {
+      const Cell& cell = t_.cells_[c];
+      const auto at = [&](Index v) -> const Vec3& { return t_.points_[v]; };
+      const int inf = t_.infinite_position(c);
+      Index next = kNone;
+      if (inf >= 0) {
+        const auto& f = kFacet[inf];
+        if (kernel.orient3d(at(cell.v[f[0]]), at(cell.v[f[1]]), at(cell.v[f[2]]), q) > 0) return kNone;
+        next = cell.n[inf];
+      } else {
+        walk_ ^= walk_ << 13, walk_ ^= walk_ >> 17, walk_ ^= walk_ << 5;
+        for (int j = 0; j < 4 && next == kNone; ++j) {
+          const int i = int(walk_ + j) & 3;
+          const auto& f = kFacet[i];
+          if (cell.n[i] != previous && kernel.orient3d(at(cell.v[f[0]]), at(cell.v[f[1]]), at(cell.v[f[2]]), q) < 0)
+            next = cell.n[i];
+        }
+        if (next == kNone) return c;
+      }
+      previous = c, c = next;
+    }
+  }
 
   // Whether a point of ids is a duplicate or represents one.
   bool involves_duplicates(const std::vector<Index>& ids) const {
@@ -328,10 +426,12 @@ private:
       Index cell;
       int mirror;
     };
-    const auto key_of = [](const std::array<Index, 4>& v, int k) {
-      std::array<Index, 3> f{v[kFacet[k][0]], v[kFacet[k][1]], v[kFacet[k][2]]};
-      std::sort(f.begin(), f.end());
-      return f;
+    const auto key_of = [](const std::array<Index, 4>& v, int k) {  // the facet's vertices sorted
+      Index a = v[kFacet[k][0]], b = v[kFacet[k][1]], c = v[kFacet[k][2]];
+      if (a > b) std::swap(a, b);
+      if (b > c) std::swap(b, c);
+      if (a > b) std::swap(a, b);
+      return std::array<Index, 3>{a, b, c};
     };
     std::array<Outside, 16> outside;  // 2 to 4 cells, 4 facets each
     std::size_t outsides = 0;
@@ -353,19 +453,23 @@ private:
       }
     }
     for (std::size_t j = made.size(); j < old.size(); ++j) free_.push_back(ids[j]);
+    t_.num_finite_cells_ = t_.num_finite_cells_ + made.size() - old.size();  // flips join finite cells only
     for (std::size_t j = 0; j < made.size(); ++j) {
       cells[ids[j]].v = made[j];
       cell_stamp_[ids[j]] = 0;
       flip_queue_.push_back(ids[j]);
       for (Index u : made[j]) t_.vertex_cell_[u] = ids[j];
     }
+    std::array<std::array<Index, 3>, 12> keys;  // of made[j]'s facet k at 4 j + k
+    for (std::size_t j = 0; j < made.size(); ++j)
+      for (int k = 0; k < 4; ++k) keys[4 * j + k] = key_of(made[j], k);
     for (std::size_t j = 0; j < made.size(); ++j)
       for (int k = 0; k < 4; ++k) {
-        const auto key = key_of(made[j], k);
+        const auto& key = keys[4 * j + k];
         Index nb = kNone;
         for (std::size_t l = 0; l < made.size() && nb == kNone; ++l)
           for (int m = 0; m < 4; ++m)
-            if (l != j && key_of(made[l], m) == key) nb = ids[l];
+            if (l != j && keys[4 * l + m] == key) nb = ids[l];
         if (nb == kNone)
           for (std::size_t o = 0; o < outsides; ++o)
             if (outside[o].key == key) nb = outside[o].cell, cells[nb].n[outside[o].mirror] = ids[j];
@@ -454,7 +558,7 @@ private:
       for (int k = 0; k < 4; ++k) {
         const Index u = cv[k];
         if (u != kInfinite) {
-          const Vec3& p = at_[u];
+          const Vec3& p = t_.points_[u];
           lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
           hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
           if (!removed_[u]) ids.push_back(u);
@@ -466,7 +570,7 @@ private:
       }
     }
     for (Index h : hidden_) {
-      const Vec3& p = at_[h];
+      const Vec3& p = t_.points_[h];
       if (!removed_[h] && t_.status_[h] == PointStatus::hidden && p.x >= lo.x && p.x <= hi.x && p.y >= lo.y &&
           p.y <= hi.y && p.z >= lo.z && p.z <= hi.z)
         ids.push_back(h);
@@ -506,7 +610,10 @@ private:
           if (!(walls[inside[k]] >> i & 1) && number[s] == kNone) number[s] = 0, inside.push_back(s);
         }
       // Cell ids: the region's first, then unused ones, then new ones.
-      for (Index c : region) cell_stamp_[c] = kDead, free_.push_back(c);
+      for (Index c : region) {
+        cell_stamp_[c] = kDead, free_.push_back(c);
+        t_.num_finite_cells_ -= !t_.is_infinite(c);
+      }
       for (Index s : inside) {
         Index c;
         if (!free_.empty()) {
@@ -528,6 +635,7 @@ private:
         }
         for (Index u : cell.v)
           if (u != kInfinite) t_.vertex_cell_[u] = number[s], t_.status_[u] = PointStatus::vertex;
+        t_.num_finite_cells_ += !t_.is_infinite(number[s]);
       }
       for (const Boundary& b : boundary) {
         cells[number[b.cell]].n[b.facet] = b.outside;
@@ -544,10 +652,10 @@ private:
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     std::vector<Vec3> pts(ids.size());
-    std::vector<double> ws(at_w_.empty() ? 0 : ids.size());
+    std::vector<double> ws(t_.weights_.empty() ? 0 : ids.size());
     for (std::size_t k = 0; k < ids.size(); ++k) {
-      pts[k] = at_[ids[k]];
-      if (!ws.empty()) ws[k] = at_w_[ids[k]];
+      pts[k] = t_.points_[ids[k]];
+      if (!ws.empty()) ws[k] = t_.weights_[ids[k]];
     }
     try {
       return Triangulation(std::move(pts), std::move(ws));
@@ -588,28 +696,56 @@ UpdateReport Triangulation::move_points(std::span<const Index> ids, std::span<co
     fail("got " + std::to_string(to.size()) + " positions for " + std::to_string(ids.size()) + " points",
          ErrorKind::Misuse);
   check_weights_given(weighted(), ids.size(), weights.size());
-  std::vector<Vec3> points = points_;
-  std::vector<double> w = weights_;
-  std::vector<char> seen(points.size(), 0);
+  const std::size_t n = points_.size();
+  std::vector<Index> sorted(ids.begin(), ids.end());
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 0; k < sorted.size(); ++k)
+    if (sorted[k] >= n || (k > 0 && sorted[k] == sorted[k - 1]))
+      fail("point id " + std::to_string(sorted[k]) + " is out of range or given twice", ErrorKind::Misuse);
+  for (std::size_t k = 0; k < ids.size(); ++k) check_point(ids[k], to[k], weights.empty() ? nullptr : &weights[k]);
+  // The new values in place, the old ones kept.
   std::vector<Index> moved;
+  std::vector<Vec3> old_p;
+  std::vector<double> old_w;
   for (std::size_t k = 0; k < ids.size(); ++k) {
     const Index i = ids[k];
-    if (i >= points.size() || seen[i])
-      fail("point id " + std::to_string(i) + " is out of range or given twice", ErrorKind::Misuse);
-    seen[i] = 1;
-    if (points[i] == to[k] && (w.empty() || w[i] == weights[k])) continue;
-    points[i] = to[k];
-    if (!w.empty()) w[i] = weights[k];
+    if (points_[i] == to[k] && (weights.empty() || weights_[i] == weights[k])) continue;
     moved.push_back(i);
+    old_p.push_back(points_[i]), points_[i] = to[k];
+    if (!weights.empty()) old_w.push_back(weights_[i]), weights_[i] = weights[k];
   }
-  check_input(points, w);
   UpdateReport report;
   if (moved.empty()) return report;
-  std::swap(points, points_);
-  std::swap(w, weights_);
-  // points, w: the values before.
-  Updater updater(*this, points, w);
-  if (updater.move(moved)) {
+  const auto as_it_was = [&] {
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      points_[moved[k]] = old_p[k];
+      if (!old_w.empty()) weights_[moved[k]] = old_w[k];
+    }
+  };
+  // The points' span (see check_input): when the corners of a cell that
+  // holds no moved point span enough, all do; else it is measured.
+  bool spans = false;
+  for (Index c = 0; c < cells_.size() && moved.size() * 8 < n; ++c) {
+    const auto& v = cells_[c].v;
+    if (is_infinite(c) || std::any_of(v.begin(), v.end(), [&](Index u) { return std::binary_search(sorted.begin(), sorted.end(), u); }))
+      continue;
+    double extent = 0;
+    for (const auto axis : {&Vec3::x, &Vec3::y, &Vec3::z})
+      for (Index a : v)
+        for (Index b : v) extent = std::max(extent, points_[a].*axis - points_[b].*axis);
+    spans = extent >= kMinExtent;
+    break;
+  }
+  if (!spans) {
+    try {
+      check_input(points_, weights_);
+    } catch (const Error&) {
+      as_it_was();
+      throw;
+    }
+  }
+  Updater updater(*this);
+  if (updater.move(moved, old_p, old_w)) {
     updater.tell(report);
     return report;
   }
@@ -619,7 +755,8 @@ UpdateReport Triangulation::move_points(std::span<const Index> ids, std::span<co
   try {
     *this = Triangulation(std::move(now), std::move(now_w));
   } catch (const Error&) {
-    *this = Triangulation(std::move(points), std::move(w));  // as it was
+    as_it_was();
+    *this = Triangulation(points_, weights_);
     throw;
   }
   return report;
@@ -644,14 +781,12 @@ UpdateReport Triangulation::insert_points(std::span<const Vec3> points, std::spa
   UpdateReport report;
   if (points.empty()) return report;
   const Index first = Index(points_.size());
-  const std::vector<Vec3> before = points_;
-  const std::vector<double> before_w = weights_;
   points_ = all, weights_ = w;
   status_.resize(all.size(), PointStatus::vertex);
   representative_.resize(all.size());
   std::iota(representative_.begin() + first, representative_.end(), first);
   vertex_cell_.resize(all.size(), kNone);
-  Updater updater(*this, before, before_w);
+  Updater updater(*this);
   if (updater.insert(first)) {
     updater.tell(report);
     return report;
@@ -684,7 +819,7 @@ UpdateReport Triangulation::remove_points(std::span<const Index> ids) {
   if (gone.empty()) return report;
   std::vector<Vec3> before = points_;
   std::vector<double> before_w = weights_;
-  Updater updater(*this, points_, weights_);
+  Updater updater(*this);
   if (!updater.remove(gone)) {
     report.rebuilt = true;
     try {
@@ -709,11 +844,14 @@ UpdateReport Triangulation::remove_points(std::span<const Index> ids) {
     if (!leaves[i]) status.push_back(status_[i]), representative.push_back(renumber[representative_[i]]);
   points_ = std::move(rest), weights_ = std::move(rest_w);
   status_ = std::move(status), representative_ = std::move(representative);
-  vertex_cell_.assign(points_.size(), kNone);
   Index hint = kNone;
   for (Index c = 0; c < cells_.size() && hint == kNone; ++c)
     if (!dead[c]) hint = c;
-  insert_into({}, std::move(free_cells), hint);  // compacts the cells, counts again
+  insert_into({}, std::move(free_cells), hint);  // compacts the cells, counts the points again
+  vertex_cell_.assign(points_.size(), kNone);     // the vertices were renumbered
+  for (Index c = 0; c < cells_.size(); ++c)
+    for (Index v : cells_[c].v)
+      if (v != kInfinite) vertex_cell_[v] = c;
   return report;
 }
 

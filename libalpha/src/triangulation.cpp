@@ -26,27 +26,26 @@ namespace {
 // differences stay well inside double range for the filters.
 constexpr double kMaxCoordinate = 1e15;
 constexpr double kMaxWeight = 1e30;
-constexpr double kMinExtent = 1e-100;
 
 }  // namespace
+
+void check_point(std::size_t i, const Vec3& p, const double* weight) {
+  for (double v : {p.x, p.y, p.z})
+    if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
+      fail("point " + std::to_string(i) + ": coordinate " + std::to_string(v) +
+               (std::isfinite(v) ? " is out of range (|x| > 1e15)" : " is not a finite number"),
+           ErrorKind::BadInput);
+  if (weight && (!std::isfinite(*weight) || std::fabs(*weight) > kMaxWeight))
+    fail("point " + std::to_string(i) + ": weight " + std::to_string(*weight) + " is not a finite number within 1e30",
+         ErrorKind::BadInput);
+}
 
 void check_input(const std::vector<Vec3>& points, const std::vector<double>& weights) {
   if (!weights.empty() && weights.size() != points.size())
     fail("got " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
          " points", ErrorKind::Misuse);
   if (points.size() >= kInfinite) fail("too many points: " + std::to_string(points.size()), ErrorKind::LimitExceeded);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3& p = points[i];
-    for (double v : {p.x, p.y, p.z})
-      if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
-        fail("point " + std::to_string(i) + ": coordinate " + std::to_string(v) +
-                 (std::isfinite(v) ? " is out of range (|x| > 1e15)" : " is not a finite number"),
-             ErrorKind::BadInput);
-    if (!weights.empty() && (!std::isfinite(weights[i]) || std::fabs(weights[i]) > kMaxWeight))
-      fail("point " + std::to_string(i) + ": weight " + std::to_string(weights[i]) +
-               " is not a finite number within 1e30",
-           ErrorKind::BadInput);
-  }
+  for (std::size_t i = 0; i < points.size(); ++i) check_point(i, points[i], weights.empty() ? nullptr : &weights[i]);
   // Sizes scale as the squared extent: below this, the doubles that report
   // them (spectrum values, alpha_sq) would round to 0 or subnormals.
   double extent = 0;
@@ -239,20 +238,46 @@ public:
   }
 
   // Inserts `order` (input ids) into the cells t_ already has, whose
-  // unused ids are `free_cells`; vertex ids are input ids throughout.
+  // unused ids are `free_cells`; vertex ids are input ids throughout. The
+  // kernel reads the points in place (never exact_in_doubles: its answers
+  // are the same, and checking that would read every point). The vertex
+  // links and the finite cell count are kept up to date, and only the cells
+  // above the new end move into the unused ids below it, so the cost
+  // follows the cells that changed.
   void update(std::span<const Index> order, std::vector<Index> free_cells, Index hint) {
     const std::size_t n = t_.points_.size();
     o_.input.resize(n);
     std::iota(o_.input.begin(), o_.input.end(), Index(0));
-    o_.points = t_.points_;
-    o_.weights = t_.weights_;
-    in_doubles_ = Kernel::exact_in_doubles(o_.points, o_.weights);
-    kernel_ = order_kernel();
+    kernel_ = Kernel(t_.points_.data(), t_.weights_.empty() ? nullptr : t_.weights_.data());
     cell_mark_.assign(cells_.size(), 0);
     free_cells_ = std::move(free_cells);
-    for (Index p : order) hint = insert<false>(p, hint);
-    t_.num_vertices_ = t_.num_hidden_ = t_.num_finite_cells_ = 0;
-    finish(1);
+    for (Index p : order) {
+      infinite_conflicts_ = 0;
+      hint = insert<false>(p, hint);
+      if (t_.status_[p] != PointStatus::vertex) continue;  // hidden: nothing changed
+      // The new cells (across each boundary facet from the cell that stayed) link their vertices.
+      std::size_t made_finite = 0;
+      for (const Facet& f : boundary_) {
+        const Index c = cells_[f.outside].n[f.mirror];
+        bool finite = true;
+        for (Index v : cells_[c].v) {
+          if (v == kInfinite) finite = false;
+          else t_.vertex_cell_[v] = c;
+        }
+        made_finite += finite;
+      }
+      t_.num_finite_cells_ = t_.num_finite_cells_ + made_finite - (conflict_.size() - infinite_conflicts_);
+      if (t_.weighted())
+        for (Index v : cavity_vertices_)
+          if (t_.status_[v] == PointStatus::hidden) t_.vertex_cell_[v] = kNone;
+    }
+    compact_locally();
+    t_.num_vertices_ = t_.num_hidden_ = 0;
+    for (PointStatus s : t_.status_) {  // bytes: far below the cost of any insertion
+      t_.num_hidden_ += s == PointStatus::hidden;
+      t_.num_vertices_ += s == PointStatus::vertex;
+    }
+    t_.stats_ = kernel_.stats();
   }
 
 private:
@@ -298,6 +323,7 @@ private:
   std::vector<std::uint32_t> vertex_mark_;
   std::vector<Index> cavity_vertices_;
   std::uint32_t walk_rng_ = 0x9e3779b9u;
+  std::size_t infinite_conflicts_ = 0;  // infinite cells in conflict with the point being inserted
   // Parallel construction only.
   SharedCells* shared_ = nullptr;
   std::uint8_t me_ = 0;                 // this builder's lock value
@@ -535,7 +561,9 @@ private:
     // kInfinite is the largest vertex id: one maximum tells a finite cell.
     if (std::max(std::max(v[0], v[1]), std::max(v[2], v[3])) == kInfinite) {
       const auto& f = kFacet[v[0] == kInfinite ? 0 : v[1] == kInfinite ? 1 : v[2] == kInfinite ? 2 : 3];
-      return kernel_.hull_conflict(v[f[0]], v[f[1]], v[f[2]], p);
+      const bool in = kernel_.hull_conflict(v[f[0]], v[f[1]], v[f[2]], p);
+      infinite_conflicts_ += in;  // each cell is tested once per insertion
+      return in;
     }
     return kernel_.power_conflict(v, p);
   }
@@ -748,7 +776,7 @@ private:
   // Weighted points only: a vertex of the conflict cells that no boundary
   // facet keeps lies inside the cavity, and the new point hides it.
   void mark_cavity_vertices() {
-    if (vertex_mark_.size() < o_.points.size()) vertex_mark_.assign(o_.points.size(), 0);
+    if (vertex_mark_.size() < t_.points_.size()) vertex_mark_.assign(t_.points_.size(), 0);
     cavity_vertices_.clear();
     for (Index c : conflict_)
       for (Index v : cells_[c].v)
@@ -835,6 +863,35 @@ private:
         remap[sorted[k]] = Index(k);
     });
     return total;
+  }
+
+  // After an update: the live cells above the new end move into the unused
+  // ids below it, their neighbours and vertices relinked.
+  void compact_locally() {
+    std::vector<Index>& unused = free_cells_;
+    std::sort(unused.begin(), unused.end());
+    const Index end = Index(cells_.size() - unused.size());
+    const auto above = std::lower_bound(unused.begin(), unused.end(), end);
+    std::vector<Index> moved_to(cells_.size() - end, kNone);  // of cell end + k
+    std::vector<Index> holes(unused.begin(), above);
+    auto skip = above;
+    Index from = end;
+    for (Index hole : holes) {
+      for (; skip != unused.end() && *skip == from; ++skip) ++from;  // unused above the end
+      moved_to[from - end] = hole;
+      cells_[hole] = cells_[from++];
+    }
+    const auto now = [&](Index c) { return c >= end ? moved_to[c - end] : c; };
+    for (Index hole : holes) {
+      for (Index& nb : cells_[hole].n) nb = now(nb);
+      for (Index v : cells_[hole].v)
+        if (v != kInfinite) t_.vertex_cell_[v] = hole;
+    }
+    for (Index hole : holes)
+      for (Index nb : cells_[hole].n)
+        for (Index& back : cells_[nb].n) back = now(back);
+    cells_.resize(end);
+    unused.clear();
   }
 
   // Drops unused cell slots, gives the vertices their input indices and
