@@ -24,9 +24,6 @@ std::vector<alpha::Index> all_atoms(std::size_t n) {
   return out;
 }
 
-// Probabilities to 4 decimals; null where none was computed (find_cavities alone).
-json probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
-
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
 json lining_atoms(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
@@ -62,7 +59,7 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
   json e = {
       {"rank", rank},
       {"score", score(c.score)},
-      {"probability", probability(c.probability)},
+      {"probability", report_probability(c.probability)},
       {"sa_volume", length(c.sa_volume)},
       {"sa_area", length(c.sa_area)},
       {"ms_volume", length(c.ms_volume)},
@@ -150,7 +147,7 @@ json site_list(const PocketRun& run) {
                    {"kind", s.is_void ? "void" : "pocket"},
                    {"cavity_rank", s.index + 1},
                    {"score", score(c.score)},
-                   {"probability", probability(c.probability)},
+                   {"probability", report_probability(c.probability)},
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(s.center)},
                    {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
@@ -228,6 +225,8 @@ std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank) {
     if (l.lies_in(rank)) out.push_back(ligand_id(run.structure->hetero_groups[l.group]));
   return out;
 }
+
+json report_probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
 
 json mean_plddt(const Structure& structure) { return mean_plddt(structure, all_atoms(structure.atoms.size())); }
 

@@ -51,6 +51,10 @@ struct PocketRun {
   double mesh_resolution = kDefaultMeshResolution;  // lattice spacing of the surface mesh, A
 };
 
+// A probability as report.json and the tables have it: 4 decimals; null
+// where none was computed (find_cavities alone).
+nlohmann::ordered_json report_probability(double p);
+
 // Predicted models: the mean pLDDT (B-factor) of the residues of these
 // atoms, one value per residue (its first atom's: a model gives all atoms
 // of a residue the same), rounded to 3 decimals; null for other structures.

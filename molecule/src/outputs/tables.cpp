@@ -30,9 +30,6 @@ std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<al
   return ',' + std::to_string(residues_of(atoms, lining).size()) + ',' + csv_field(residue_words(atoms, lining));
 }
 
-// Probabilities to 4 decimals; null where none was computed (find_cavities alone).
-json probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
-
 // A number as report.json has it (the shortest text that reads back the
 // same); null is empty.
 std::string csv_number(const json& x) { return x.is_null() ? std::string() : x.dump(); }
@@ -105,7 +102,7 @@ json table_rows(const PocketRun& run) {
     for (const std::string& id : site_ligands(run, ++rank)) ligands += (ligands.empty() ? "" : " ") + id;
     // The centre is the site's (its cluster's), not always its cavity's.
     sites.push_back(json::array(
-        {rank, s.is_void ? "void" : "pocket", s.index + 1, score(c.score), probability(c.probability),
+        {rank, s.is_void ? "void" : "pocket", s.index + 1, score(c.score), report_probability(c.probability),
          length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area), length(c.depth),
          c.mouths.size(), length(c.mouth_area), score(c.buriedness), c.burial_atoms, length(c.max_probe_radius),
          length(s.center.x), length(s.center.y), length(s.center.z), mean_plddt(st, c.lining_atoms),
@@ -161,7 +158,7 @@ std::string pockets_csv(const PocketRun& run) {
   const std::vector<Atom>& atoms = run.structure->atoms;
   std::size_t rank = 0;
   for (const Cavity& c : run.search->cavities.pockets) {
-    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' + csv_number(probability(c.probability));
+    out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' + csv_number(report_probability(c.probability));
     for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area)})
       out += ',' + csv_number(x);
     out += ',' + std::to_string(c.mouths.size());
