@@ -5,10 +5,13 @@
 Reads every #include "..." of libalpha/, molecule/ and apps/ and checks:
   - no cycle between files; a header and its source count as one unit
     (x.cpp's includes are x's), so a cycle through a source is one too;
-  - no arrow up the layers: libalpha -> molecule -> apps, and inside
-    molecule up the stages util -> structure -> cavities -> ranking ->
-    outputs -> batch -> (analysis.cpp, trajectory); a public header
-    (molecule/include/molecule/x.hpp) is in the stage of its source;
+  - no arrow up the layers: libalpha -> molecule -> apps; inside libalpha
+    up its folders util -> numerics -> triangulation -> complex -> flow ->
+    union -> mesh; inside molecule up the stages util -> structure ->
+    cavities -> ranking -> outputs -> batch -> (analysis.cpp, trajectory);
+    a public header (include/alpha/x.hpp, include/molecule/x.hpp) is in the
+    folder of its source, a libalpha header without one in the highest
+    folder of what it includes;
   - the installed headers (libalpha/include, molecule/include) include only
     installed headers;
   - every quoted include names a file of the tree.
@@ -22,6 +25,9 @@ from pathlib import Path
 # (analysis.cpp) run a structure through all of them.
 STAGES = ["util", "structure", "cavities", "ranking", "outputs", "batch", "", "trajectory"]
 LEVEL = {stage: i for i, stage in enumerate(STAGES)}
+# libalpha's folders, lowest first.
+FOLDERS = ["util", "numerics", "triangulation", "complex", "flow", "union", "mesh"]
+NAMES = {"libalpha": FOLDERS, "molecule": STAGES}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 root = Path(sys.argv[1]).resolve()
@@ -42,12 +48,21 @@ def files(folder, patterns=("*.cpp", "*.hpp")):
         yield from sorted((root / folder).rglob(pattern))
 
 
-# libalpha (one flat layer), molecule's stages and apps: one unit per file
-# stem (include/alpha/x.hpp, src/x.cpp and src/x.hpp are x).
-for f in files("libalpha"):
-    unit_of[f] = unit("libalpha", f.stem, 0)
-    if "include" in f.relative_to(root / "libalpha").parts:
-        public.add(f)
+# libalpha's folders, molecule's stages and apps: one unit per file stem
+# (include/alpha/x.hpp, src/<folder>/x.cpp and src/<folder>/x.hpp are x).
+header_only = []  # libalpha's installed headers without a source
+for f in files("libalpha/src"):
+    rel = f.relative_to(root / "libalpha/src")
+    if len(rel.parts) != 2 or rel.parts[0] not in FOLDERS:
+        problems.append(f"{f.relative_to(root)}: not in one of include_graph.py's FOLDERS")
+        continue
+    unit_of[f] = unit("libalpha", f.stem, FOLDERS.index(rel.parts[0]))
+for f in files("libalpha/include"):
+    public.add(f)
+    if f"libalpha:{f.stem}" in level_of:
+        unit_of[f] = f"libalpha:{f.stem}"
+    else:
+        header_only.append(f)
 sources = {}  # molecule stem -> stage of its source
 for f in files("molecule/src"):
     rel = f.relative_to(root / "molecule/src")
@@ -72,6 +87,8 @@ def resolve(f, name):
     """The file a quoted include of f names, searched as the build does."""
     candidates = [f.parent / name]
     top = f.relative_to(root).parts[0]
+    if top == "libalpha":
+        candidates.append(root / "libalpha/src" / name)
     if top in ("libalpha", "molecule", "apps"):
         candidates.append(root / "libalpha/include" / name)
     if top in ("molecule", "apps"):
@@ -81,6 +98,19 @@ def resolve(f, name):
             return c.resolve()
     return None
 
+
+# A header-only installed header is in the highest folder of what it
+# includes (the lowest that keeps its own arrows down).
+while header_only:
+    ready = [f for f in header_only
+             if all(resolve(f, n) not in header_only for n in INCLUDE.findall(f.read_text(errors="replace")))]
+    if not ready:
+        problems.append("installed headers including each other: " + ", ".join(f.name for f in header_only))
+        break
+    for f in ready:
+        targets = [unit_of.get(resolve(f, n)) for n in INCLUDE.findall(f.read_text(errors="replace"))]
+        unit_of[f] = unit("libalpha", f.stem, max([level_of[v][1] for v in targets if v], default=0))
+        header_only.remove(f)
 
 edges = {}  # unit -> {unit: example "file -> include"}
 for f, u in unit_of.items():
@@ -98,8 +128,9 @@ for f, u in unit_of.items():
         if v is None or v == u:
             continue
         (layer_u, level_u), (layer_v, level_v) = level_of[u], level_of[v]
-        if LAYER[layer_v] > LAYER[layer_u] or (layer_u == layer_v == "molecule" and level_v > level_u):
-            problems.append(f"{where}: an arrow up, from {STAGES[level_u] or 'src'} to {STAGES[level_v] or 'src'}"
+        if LAYER[layer_v] > LAYER[layer_u] or (layer_u == layer_v != "apps" and level_v > level_u):
+            names = NAMES.get(layer_u)
+            problems.append(f"{where}: an arrow up, from {names[level_u] or 'src'} to {names[level_v] or 'src'}"
                             if layer_u == layer_v else f"{where}: an arrow up, from {layer_u} to {layer_v}")
         edges.setdefault(u, {})[v] = where
 

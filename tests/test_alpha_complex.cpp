@@ -9,7 +9,7 @@
 
 #include "alpha/alpha_complex.hpp"
 #include "alpha/error.hpp"
-#include "exact_size.hpp"  // libalpha/src: GMP
+#include "numerics/exact_size.hpp"  // libalpha/src: GMP
 #include "point_sets.hpp"
 
 using namespace alpha;

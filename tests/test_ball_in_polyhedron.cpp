@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "ball_in_polyhedron.hpp"
-#include "convex_polyhedron.hpp"
+#include "union/ball_in_polyhedron.hpp"
+#include "union/convex_polyhedron.hpp"
 
 using namespace alpha;
 

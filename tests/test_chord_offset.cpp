@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "chord_offset.hpp"
+#include "mesh/chord_offset.hpp"
 
 using namespace alpha;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// discard_read (libalpha/src/huge_pages.hpp): the pages it gives back hold
+// discard_read (libalpha/src/util/huge_pages.hpp): the pages it gives back hold
 // only the part already read, never a value at or after `end`, and
 // successive calls leave no page of the read part behind; discard_unused
 // gives back no page that holds a value outside its range.
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../libalpha/src/huge_pages.hpp"
+#include "util/huge_pages.hpp"
 
 using alpha::discard_read;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The library's internal radix sorts (libalpha/src/radix_sort.hpp) against
+// The library's internal radix sorts (libalpha/src/util/radix_sort.hpp) against
 // the standard sorts: radix_sort as std::stable_sort (equal keys kept in
 // input order), radix_sort_in_place as std::sort by (key, minor key).
 #include <catch2/catch.hpp>
@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "../libalpha/src/radix_sort.hpp"
+#include "util/radix_sort.hpp"
 
 TEST_CASE("radix sorts agree with the standard sorts", "[radix]") {
   std::mt19937_64 rng(91);

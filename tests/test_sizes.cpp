@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "alpha/error.hpp"
-#include "exact_size.hpp"  // libalpha/src: GMP
+#include "numerics/exact_size.hpp"  // libalpha/src: GMP
 #include "alpha/sizes.hpp"
 #include "point_sets.hpp"
 

@@ -14,7 +14,7 @@
 #include "alpha/error.hpp"
 #include "alpha/union_of_balls.hpp"
 #include "ball_union.hpp"
-#include "compensated_sum.hpp"
+#include "numerics/compensated_sum.hpp"
 #include "point_sets.hpp"
 
 using namespace alpha;

@@ -14,7 +14,7 @@
 //
 // A SizeKernel is cheap to create and owns its counters; it is not shared
 // between threads (one per thread); its non-counting queries are const.
-// The exact sizes themselves (GMP fractions) are internal: src/exact_size.hpp.
+// The exact sizes themselves (GMP fractions) are internal: src/numerics/exact_size.hpp.
 #pragma once
 #include <array>
 #include <cstddef>

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "alpha/eroded_union.hpp"
-#include "compensated_sum.hpp"
-#include "eroded_union_geometry.hpp"
+#include "numerics/compensated_sum.hpp"
+#include "union/eroded_union_geometry.hpp"
 
 namespace alpha {
 namespace eroded_union_detail {

@@ -11,9 +11,9 @@
 #include <span>
 
 #include "alpha/error.hpp"
-#include "dyadic.hpp"
-#include "exact.hpp"
-#include "exact_size.hpp"
+#include "numerics/dyadic.hpp"
+#include "numerics/exact.hpp"
+#include "numerics/exact_size.hpp"
 
 namespace alpha {
 namespace {

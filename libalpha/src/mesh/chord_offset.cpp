@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "chord_offset.hpp"
+#include "mesh/chord_offset.hpp"
 
 #include <vector>
 

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "alpha/error.hpp"
-#include "ball_in_polyhedron.hpp"
-#include "compensated_sum.hpp"
-#include "convex_polyhedron.hpp"
+#include "union/ball_in_polyhedron.hpp"
+#include "numerics/compensated_sum.hpp"
+#include "union/convex_polyhedron.hpp"
 
 namespace alpha {
 namespace {

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "eroded_union_integrator.hpp"
+#include "union/eroded_union_integrator.hpp"
 
 namespace alpha {
 namespace {

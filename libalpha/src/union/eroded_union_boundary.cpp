@@ -12,7 +12,7 @@
 #include "alpha/eroded_union.hpp"
 #include "alpha/error.hpp"
 #include "alpha/sizes.hpp"
-#include "eroded_union_geometry.hpp"
+#include "union/eroded_union_geometry.hpp"
 
 namespace alpha {
 

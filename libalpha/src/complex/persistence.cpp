@@ -8,9 +8,9 @@
 #include <tuple>
 
 #include "alpha/error.hpp"
-#include "huge_pages.hpp"
-#include "prefetch.hpp"
-#include "radix_sort.hpp"
+#include "util/huge_pages.hpp"
+#include "util/prefetch.hpp"
+#include "util/radix_sort.hpp"
 
 namespace alpha {
 namespace {

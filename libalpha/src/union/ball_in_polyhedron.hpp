@@ -16,7 +16,7 @@
 // Degenerate faces (zero area, or p in their plane) contribute 0, and
 // every term is continuous in the vertices.
 #pragma once
-#include "convex_polyhedron.hpp"
+#include "union/convex_polyhedron.hpp"
 
 namespace alpha {
 

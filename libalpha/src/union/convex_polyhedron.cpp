@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "convex_polyhedron.hpp"
+#include "union/convex_polyhedron.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "alpha/error.hpp"
-#include "chord_offset.hpp"
+#include "mesh/chord_offset.hpp"
 #include "alpha/nearest_ball.hpp"
 
 namespace alpha {

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "huge_pages.hpp"
+#include "util/huge_pages.hpp"
 
 namespace alpha {
 

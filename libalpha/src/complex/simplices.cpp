@@ -7,9 +7,9 @@
 #include <cstdint>
 
 #include "alpha/error.hpp"
-#include "huge_pages.hpp"
-#include "parallel.hpp"
-#include "prefetch.hpp"
+#include "util/huge_pages.hpp"
+#include "util/parallel.hpp"
+#include "util/prefetch.hpp"
 
 namespace alpha {
 namespace {

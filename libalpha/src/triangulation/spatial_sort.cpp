@@ -6,7 +6,7 @@
 #include <functional>
 #include <utility>
 
-#include "parallel.hpp"
+#include "util/parallel.hpp"
 
 namespace alpha {
 namespace {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "eroded_union_integrator.hpp"
+#include "union/eroded_union_integrator.hpp"
 
 namespace alpha {
 namespace {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "exact.hpp"
+#include "numerics/exact.hpp"
 
-#include "dyadic.hpp"
+#include "numerics/dyadic.hpp"
 
 #include <gmpxx.h>
 

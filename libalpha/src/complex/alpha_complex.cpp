@@ -13,11 +13,11 @@
 
 #include "alpha/error.hpp"
 #include "alpha/uninitialized_allocator.hpp"
-#include "exact_size.hpp"
-#include "huge_pages.hpp"
-#include "parallel.hpp"
-#include "prefetch.hpp"
-#include "radix_sort.hpp"
+#include "numerics/exact_size.hpp"
+#include "util/huge_pages.hpp"
+#include "util/parallel.hpp"
+#include "util/prefetch.hpp"
+#include "util/radix_sort.hpp"
 
 namespace alpha {
 namespace {

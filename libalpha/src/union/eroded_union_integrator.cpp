@@ -2,7 +2,7 @@
 // ErodedUnion's integrals and nearest-point queries, through its
 // Integrator (eroded_union_integrator.hpp): the whole layer, the cells'
 // shares, Nearby.
-#include "eroded_union_integrator.hpp"
+#include "union/eroded_union_integrator.hpp"
 
 #include <cmath>
 #include <memory>

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exact.hpp"
+#include "numerics/exact.hpp"
 
 namespace alpha {
 namespace {

@@ -15,9 +15,9 @@
 
 #include "alpha/error.hpp"
 #include "alpha/spatial_sort.hpp"
-#include "triangulation_input.hpp"
-#include "huge_pages.hpp"
-#include "parallel.hpp"
+#include "triangulation/triangulation_input.hpp"
+#include "util/huge_pages.hpp"
+#include "util/parallel.hpp"
 
 namespace alpha {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ball_in_polyhedron.hpp"
+#include "union/ball_in_polyhedron.hpp"
 
 #include <cmath>
 

@@ -28,7 +28,7 @@
 #include "alpha/error.hpp"
 #include "alpha/spatial_sort.hpp"
 #include "alpha/triangulation.hpp"
-#include "triangulation_input.hpp"
+#include "triangulation/triangulation_input.hpp"
 
 namespace alpha {
 namespace {
