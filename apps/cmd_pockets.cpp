@@ -253,8 +253,8 @@ int run_pockets(const PocketsOptions& opt) {
                                     molecule::site_features_csv(analysis.structure, analysis.search.cavities));
   if (!opt.surface_points.empty())
     molecule::write_file_atomically(opt.surface_points, molecule::surface_points_csv(analysis.structure.atoms));
-  if (options.outputs.meshes)
-    spdlog::info("meshes: {:.3f} s at resolution {} A", out.mesh_seconds(), opt.analysis.mesh_resolution);
+  if (analysis.meshes)
+    spdlog::info("meshes: {:.3f} s at resolution {} A", analysis.meshes->seconds, opt.analysis.mesh_resolution);
   spdlog::info("wrote {} files to {}/ in {:.3f} s; total {:.3f} s", written.size(), outdir, write_time.seconds(),
                total_time.seconds());
 

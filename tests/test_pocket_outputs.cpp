@@ -26,6 +26,7 @@
 #include "outputs/pocket_colors.hpp"
 #include "outputs/pocket_outputs.hpp"
 #include "outputs/pocket_report.hpp"
+#include "molecule/analysis.hpp"
 #include "molecule/ligand_sites.hpp"
 #include "molecule/pocket_search.hpp"
 #include "molecule/structure.hpp"
@@ -48,6 +49,7 @@ struct Run {
   TempDir dir;
   molecule::Structure structure;
   molecule::PocketSearch search;
+  molecule::PocketMeshes meshes;
   std::vector<molecule::LigandSite> ligands;
   molecule::PocketRun run;
   std::vector<std::string> written;
@@ -56,6 +58,7 @@ struct Run {
   Run()
       : structure(molecule::read_structure(kStructure)),
         search(molecule::search_pockets(structure, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true)),
+        meshes(molecule::pocket_meshes(search, molecule::kDefaultMeshResolution)),
         ligands(molecule::ligand_sites(structure, search)) {
     run.file = kStructure;
     run.structure = &structure;
@@ -63,6 +66,7 @@ struct Run {
     run.search = &search;
     run.ligands = &ligands;
     run.mesh_format = "ply";
+    run.meshes = &meshes;
     molecule::PocketOutputDir out((dir / "out").string());
     written = out.write(run);
     report = json::parse(testing::read_text(dir / "out/report.json"));
@@ -338,6 +342,44 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
     CHECK(count_colors(surface, molecule::rank_color(k)).first > 0);
   }
   CHECK(std::count(sites.begin(), sites.end(), 0) > long(sites.size() / 2));  // grey elsewhere
+}
+
+TEST_CASE("pockets outputs: the analysis makes the meshes when its outputs include them, and only then",
+          "[pocket_outputs]") {
+  const Run& r = the_run();
+  molecule::AnalysisOptions options;  // every output
+  const molecule::Analysis a = molecule::analyse(kStructure, options);
+  REQUIRE(a.meshes);
+  // Of the search's own body, the same as from a search that kept it;
+  // the body is freed once meshed.
+  CHECK(a.meshes->surface.points == r.meshes.surface.points);
+  CHECK(a.meshes->surface.face_colors == r.meshes.surface.face_colors);
+  CHECK(a.meshes->pockets.size() == a.search.cavities.pockets.size());
+  CHECK(a.meshes->voids.size() == a.search.cavities.voids.size());
+  CHECK(!a.search.bodies.accessible);
+  CHECK(!a.search.bodies.excluded);
+  CHECK(a.run().meshes == &*a.meshes);
+  CHECK(a.run().mesh_format == "ply");
+
+  options.outputs.meshes = false;
+  const molecule::Analysis b = molecule::analyse(kStructure, options);
+  CHECK(!b.meshes);
+  CHECK(!b.search.bodies.excluded);
+  CHECK(b.run().meshes == nullptr);
+  CHECK(b.run().mesh_format.empty());
+
+  // A run that names a mesh format but has no meshes is a caller's bug,
+  // refused before anything is written.
+  molecule::PocketRun run = r.run;
+  run.meshes = nullptr;
+  TempDir dir;
+  try {
+    molecule::PocketOutputDir((dir / "out").string()).write(run);
+    FAIL("not refused");
+  } catch (const alpha::Error& e) {
+    CHECK(e.kind() == alpha::ErrorKind::Misuse);
+  }
+  CHECK(dir.files().empty());
 }
 
 TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other pockets and voids", "[pocket_outputs]") {
@@ -758,10 +800,11 @@ TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot h
   // The same molecule 20000 A away: every centre is beyond the columns.
   molecule::Structure far = r.structure;
   for (molecule::Atom& a : far.atoms) a.position.x += 20000;
-  const molecule::PocketSearch search =
-      molecule::search_pockets(far, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true);
+  const molecule::PocketSearch search = molecule::search_pockets(far, {});
   const std::vector<molecule::LigandSite> ligands = molecule::ligand_sites(far, search);
   molecule::PocketRun run = r.run;
+  run.mesh_format.clear();  // the meshes are near's
+  run.meshes = nullptr;
   run.structure = &far;
   run.search = &search;
   run.ligands = &ligands;

@@ -20,8 +20,8 @@ PocketRun Analysis::run() const {
   r.version = options.version;
   r.search = &search;
   r.ligands = &ligands;
-  r.mesh_format = options.outputs.meshes ? options.mesh_format : "";
-  r.mesh_resolution = options.mesh_resolution;
+  r.mesh_format = meshes ? options.mesh_format : "";
+  r.meshes = meshes ? &*meshes : nullptr;
   r.min_plddt = options.structure.min_plddt;
   if (!options.radii_file.empty()) r.radii = options.radii_file;
   r.paths = &paths;
@@ -58,6 +58,10 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
       a.search = search_pockets(a.structure, options.cavities, options.ranking, options.outputs.meshes);
     } catch (const alpha::Error& e) {
       throw AnalysisError(e.kind(), alpha::in_file(file, e).what());  // e.g. all atoms in one plane
+    }
+    if (options.outputs.meshes) {
+      a.meshes = pocket_meshes(a.search, options.mesh_resolution);
+      a.search.bodies = {};  // what they were kept for is done
     }
     a.ligands = ligand_sites(a.structure, a.search);
     const auto start = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 #pragma once
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,7 +60,7 @@ struct AnalysisOptions {
   std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
   TunnelOptions tunnels;            // --tunnel-probe, --pores
   SiteRanking ranking = SiteRanking::probability;
-  double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A
+  double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A (Analysis::meshes)
   bool report = true;  // Analysis::report made (track reads the search, not the report)
 };
 
@@ -73,6 +74,10 @@ struct Analysis {
   std::vector<std::string> tunnel_starts;  // labels of the starts
   std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnels)
   std::vector<TunnelPath> cycle_paths;     // the way through each of search.cavities.tunnels (find_tunnels)
+  // The surface and casts (pocket_meshes) when options.outputs.meshes, made
+  // of the search's solvent-excluded body, which is then freed
+  // (search.bodies is empty); none otherwise.
+  std::optional<PocketMeshes> meshes;
   double tunnels_seconds = 0;
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
   std::shared_ptr<const Report> report;  // pocket_report(run()) if options.report; report_text() is its file

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The meshes of `alphapocket pockets` (written by PocketOutputDir):
+// The meshes of `alphapocket pockets` (made by molecule::analyse when its
+// outputs include them, Analysis::meshes; written by PocketOutputDir):
 //
 //   surface   the molecular (solvent-excluded) surface, alpha::eroded_union_mesh
 //             of the probe-inflated atoms: each vertex painted in the colour

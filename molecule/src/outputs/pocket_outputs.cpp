@@ -15,7 +15,6 @@
 #include "util/staged_directory.hpp"
 #include "molecule/mesh_export.hpp"
 #include "outputs/meshlab_project.hpp"
-#include "molecule/pocket_meshes.hpp"
 #include "outputs/pocket_pdb.hpp"
 #include "outputs/pymol_script.hpp"
 #include "outputs/report_assets.hpp"
@@ -195,8 +194,10 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
                           " pseudo-atoms left out, beyond the PDB columns' range");
     files.emplace_back("tunnels.pdb", std::move(tunnels.text));
   }
-  std::optional<PocketMeshes> meshes;
+  const PocketMeshes* meshes = nullptr;  // those written
   if (selection_.meshes && !run.mesh_format.empty()) {
+    if (!run.meshes) alpha::fail("PocketOutputDir: a mesh format but no meshes", alpha::ErrorKind::Misuse);
+    meshes = run.meshes;
     std::vector<std::string> names;
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
       MeshFileContent file = mesh_file_content((path_ / name).string(), mesh);
@@ -205,8 +206,6 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
         files.emplace_back(fs::relative(file.companion_path, path_).string(), std::move(file.companion));
       names.push_back(fs::path(name).filename().string());
     };
-    meshes = pocket_meshes(*run.search, run.mesh_resolution);
-    mesh_seconds_ = meshes->seconds;
     mesh_file(molecule_mesh_path(run.mesh_format), meshes->surface);
     for (std::size_t i = 0; i < meshes->pockets.size(); ++i)
       mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format), meshes->pockets[i]);
@@ -215,7 +214,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     files.emplace_back(kMeshlabProject, meshlab_project(names));
   }
   if (selection_.html) {
-    const nlohmann::ordered_json mvs = molviewspec_scene(run, *scene, "structure.cif", meshes ? &*meshes : nullptr);
+    const nlohmann::ordered_json mvs = molviewspec_scene(run, *scene, "structure.cif", meshes);
     files.emplace_back("scene.mvsj", mvs.dump(1, '\t', false, nlohmann::ordered_json::error_handler_t::replace));
     std::vector<std::string> names{"report.html"};
     for (const auto& f : files) names.push_back(f.first);

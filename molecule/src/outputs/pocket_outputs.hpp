@@ -11,7 +11,7 @@
 //   pockets.cxc   ChimeraX script (chimerax_script)
 //   pockets.pdb   cavity centres and sinks as pseudo-atoms (pocket_pdb)
 //   meshes/       surface.<fmt> (the molecular surface), pocket_<rank>.<fmt>,
-//                 void_<rank>.<fmt> (the casts; pocket_meshes), an OBJ's
+//                 void_<rank>.<fmt> (the casts: PocketRun::meshes), an OBJ's
 //                 .mtl files, and meshlab.mlp, a MeshLab project opening
 //                 them all
 //   tunnels.csv, tunnel_profiles.csv (tunnels_csv, tunnel_profiles_csv;
@@ -61,8 +61,6 @@ public:
   // output directory, e.g. "../viewer": a batch run's one copy) instead of
   // a copy in viewer/ beside it.
   void share_viewer(const std::string& relative) { viewer_ = relative; }
-  // Wall-clock seconds the last write() spent meshing.
-  double mesh_seconds() const { return mesh_seconds_; }
 
   // Writes the selected files, replacing the directory. Returns the names
   // written, relative to the directory.
@@ -78,7 +76,6 @@ private:
   TemporaryPaths* temporaries_;
   std::string viewer_;  // share_viewer; empty: a copy in viewer/
   std::vector<std::string> warnings_;
-  double mesh_seconds_ = 0;
 
   void check_ours() const;
 };

@@ -38,6 +38,8 @@ struct PocketRun {
   // structure->hetero_groups; null when the structure has none.
   const std::vector<LigandSite>* ligands = nullptr;
   std::string mesh_format;  // "ply", "obj", "off", "stl"; empty: no meshes written
+  // The meshes written when mesh_format is given (pocket_meshes).
+  const PocketMeshes* meshes = nullptr;
   double min_plddt = 0;     // StructureOptions::min_plddt the structure was read with
   std::string radii = std::string(kRadiusTable);  // the radius table, or the --radii file
   // Tunnels and pores (find_tunnels); null: none computed.
@@ -48,7 +50,6 @@ struct PocketRun {
   std::vector<std::string> tunnel_starts;  // label of each start, by TunnelPath::start
   std::string tunnels_from = "auto";
   TunnelOptions tunnel_options;
-  double mesh_resolution = kDefaultMeshResolution;  // lattice spacing of the surface mesh, A
 };
 
 // A probability as report.json and the tables have it: 4 decimals; null
