@@ -93,7 +93,7 @@ case "$case_name" in
     expect_success
     # 1A26's CNA lies across three pockets (7, 9 and 13, holding 4, 14 and
     # 3 of its atoms inside their tetrahedra, which
-    # tests/test_ligand_sites.cpp checks by brute force). The pockets the
+    # tests/molecule/test_ligand_sites.cpp checks by brute force). The pockets the
     # model gives less than the sites' cut (0.08) are no sites (pockets 9
     # and 13, 0.030 and 0.015, with the model of 2026-12-07): CNA is placed
     # in the sites among the three, best-ranked first, at least one of them.

@@ -4,7 +4,7 @@
 # means skipped. Usage: pockets.sh ALPHAPOCKET REPO_ROOT CASE
 #
 # The cases run on examples/data/1a26A.pdb; the contents of the files are
-# checked in depth by tests/test_pocket_outputs.cpp, here: the command line,
+# checked in depth by tests/molecule/test_pocket_outputs.cpp, here: the command line,
 # which files appear where, that they agree with each other, and errors.
 set -euo pipefail
 

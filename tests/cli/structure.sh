@@ -6,7 +6,7 @@
 # Usage: structure.sh ALPHAPOCKET REPO_ROOT CASE
 #
 # Atom counts were checked against the files' ATOM/HETATM records (see
-# tests/test_structure.cpp): 1fbl.pdb has 3294 atoms, 2966 protein, 295
+# tests/molecule/test_structure.cpp): 1fbl.pdb has 3294 atoms, 2966 protein, 295
 # waters, 33 hetero (HTA, 4 Ca, 2 Zn); 1d3z_models_1_2.pdb.gz two NMR
 # models of 1231 atoms, 629 of them hydrogens; 1pfe.cif.gz a DNA strand
 # (chain A, 161 atoms kept) and echinomycin (chain B, 52).

@@ -5,7 +5,7 @@
 #
 # Expected areas: 1a26A.pdb (2769 atoms without its ligand, ProtOr radii,
 # probe 1.4) has a SASA of 16564.3 A^2; FreeSASA's Lee-Richards gives
-# 16564.29 with 2000 slices per atom (tests/test_surface_area.cpp compares
+# 16564.29 with 2000 slices per atom (tests/molecule/test_surface_area.cpp compares
 # atom by atom). Two unit balls at distance 1: volume 9 pi / 4, area 6 pi.
 set -euo pipefail
 

@@ -4,7 +4,7 @@
 # the output directory (PyMOL loads the grids and the script), GROMACS XTC
 # and TRR written by GROMACS itself and the same frames as DCD written by
 # MDAnalysis, a short real MD run, and bad input. The tracking rule is
-# checked in tests/test_track.cpp. Usage: track.sh ALPHAPOCKET REPO_ROOT CASE
+# checked in tests/molecule/test_track.cpp. Usage: track.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"

@@ -3,7 +3,7 @@
 # CLI tests of the tunnels and pores of `alphapocket pockets` (--tunnels-from,
 # --tunnel-probe, --pores, --radii) and their files: tunnels.csv,
 # tunnel_profiles.csv, tunnels.pdb. The paths themselves are checked in
-# tests/test_tunnel_paths.cpp. Usage: tunnels.sh ALPHAPOCKET REPO_ROOT CASE
+# tests/molecule/test_tunnel_paths.cpp. Usage: tunnels.sh ALPHAPOCKET REPO_ROOT CASE
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" "$@"
