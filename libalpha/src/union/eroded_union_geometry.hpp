@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The free geometry of the eroded union's integrals: the circle where two
 // spheres meet and its frame, sets of arcs on it, the wedges and spherical
-// triangles integrated, and the 8-node Gauss rule with the bisection that
-// cuts an interval where a predicate changes. Internal: included by the
+// triangles integrated, the 8-node Gauss rule with the bisection that
+// cuts an interval where a predicate changes, and the bisection along a
+// ray to where a point comes within reach. Internal: included by the
 // files that find the union's boundary and integrate it
-// (eroded_union_boundary.cpp, eroded_union_integrator.hpp).
+// (eroded_union_boundary.cpp, eroded_union_hood.hpp,
+// eroded_union_integrator.hpp).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -283,6 +285,19 @@ std::vector<Segment> segments(double a, double b, const std::array<bool, 8>& at_
     start = end;
   }
   return out;
+}
+
+// Where, to `precision`, on the ray q + t u in [lo, hi] a point of F
+// (`squared_distance` to q + t u) comes nearer than t - shift: the end of
+// the initial segment where it is not (its distance less t only decreases
+// along the ray).
+template <class SquaredDistance>
+double reach_end(const SquaredDistance& squared_distance, double shift, double lo, double hi, double precision) {
+  while (hi - lo > precision) {
+    const double mid = (lo + hi) / 2;
+    (squared_distance(mid) >= (mid - shift) * (mid - shift) ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 }  // namespace eroded_union_detail

@@ -2,8 +2,9 @@
 // The integrals of ErodedUnion's pieces (eroded_union_integrator.cpp: the
 // totals, the cells' shares and the nearest-point queries;
 // eroded_union_shares.cpp: the per-atom split; eroded_union_patch.cpp: the
-// patches' areas), on the free geometry of eroded_union_geometry.hpp.
-// Internal: included by those three files only.
+// patches' areas), on the free geometry of eroded_union_geometry.hpp and
+// the hoods of eroded_union_hood.hpp. Internal: included by those three
+// files only.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -15,39 +16,11 @@
 #include "alpha/eroded_union.hpp"
 #include "numerics/compensated_sum.hpp"
 #include "union/eroded_union_geometry.hpp"
+#include "union/eroded_union_hood.hpp"
+#include "union/piece_shares.hpp"
 
 namespace alpha {
 namespace eroded_union_detail {
-
-// A point of F found nearer to x than t: on a sphere (the nearest point
-// of a hood ball), a circle (of a hood circle) or a vertex.
-struct Nearer {
-  enum Kind { kNone, kBall, kCircle, kVertex } kind = kNone;
-  std::size_t which = 0;  // in the hood's list
-};
-
-// The balls whose power cells can hold the points of a piece (the
-// piece's balls and their neighbours): power_m(x) = |x - p|^2 - w.
-struct Site {
-  Vec3 p;
-  double w;
-  Index id;
-};
-
-// One piece's volume and area per power cell, integrated at nodes: scaled
-// to the piece's total when added (see add_scaled).
-struct PieceShares {
-  std::vector<std::pair<Index, LayerShare>> parts;
-  void add(Index id, double volume, double area) {
-    for (auto& [k, x] : parts)
-      if (k == id) {
-        x.volume += volume;
-        x.area += area;
-        return;
-      }
-    parts.push_back({id, {volume, area}});
-  }
-};
 
 using Nearest = ErodedUnion::Nearest;
 
@@ -61,45 +34,9 @@ struct LayerSum {
   LayerShare value() const { return {volume.value(), area.value()}; }
 };
 
-inline constexpr std::size_t kNoCover = std::size_t(-1);
-
 }  // namespace eroded_union_detail
 
 using namespace eroded_union_detail;
-
-// What can be within reach of a point (2r of a piece): balls whose sphere
-// comes near, the circles of edges of K between them, boundary vertices.
-struct ErodedUnion::Nearby::Hood {
-  struct Ball {
-    Vec3 c;
-    double radius, radius_sq;
-    Index id;
-    mutable std::size_t cover = kNoCover;  // see on_boundary
-  };
-  std::vector<Ball> balls;  // by id
-  std::vector<std::pair<Index, Circle>> circles;
-  // Per circle: a ball (centre, radius) holding all its arcs' points,
-  // clear()'s first test.
-  std::vector<std::pair<Vec3, double>> arc_bounds;
-  std::vector<std::size_t> vertices;
-  std::vector<std::pair<Vec3, double>> buried;  // (centre, squared radius) of balls with no boundary
-  mutable std::vector<std::pair<double, std::size_t>> holding;  // nearest()'s scratch
-  // The last point clear() found nearer: the next tests (nearby points)
-  // try it first.
-  mutable Nearer last;
-  // Every point clear() tests against it lies in a ball left out of it
-  // (see keep_at_r).
-  bool inside = false;
-  // Empty, to take the part of h that narrow() or keep_at_r() keeps.
-  void start_part_of(const Hood& h) {
-    balls.clear();
-    circles.clear();
-    arc_bounds.clear();
-    vertices.clear();
-    last = {};
-    inside = h.inside;
-  }
-};
 
 // The integrals of the pieces of one ErodedUnion.
 class ErodedUnion::Integrator {
@@ -773,19 +710,6 @@ private:
     return lo;
   }
 
-  // Where, to `precision`, on the ray q + t u in [lo, hi] a point of F
-  // (`squared_distance` to q + t u) comes nearer than t - shift: the end of
-  // the initial segment where it is not (its distance less t only decreases
-  // along the ray).
-  template <class SquaredDistance>
-  static double reach_end(const SquaredDistance& squared_distance, double shift, double lo, double hi, double precision) {
-    while (hi - lo > precision) {
-      const double mid = (lo + hi) / 2;
-      (squared_distance(mid) >= (mid - shift) * (mid - shift) ? lo : hi) = mid;
-    }
-    return hi;
-  }
-
   // Whether h holds a vertex of smaller index at vertex `self`'s point
   // (clear()'s test of those is rounding noise along a ray from there).
   bool coincident(const Hood& h, std::size_t self) const {
@@ -813,29 +737,6 @@ private:
     const double t = reach_end(squared_distance, tol_, lo, hi, 1e-3 * kBracket * r_);
     const double d = kBracket * r_, sure = 1e-12 * r_ * r_;
     return t - d > lo + kCutPrecision * r_ && t + d < hi && margin(t - d) > sure && margin(t + d) < -sure ? t : -1;
-  }
-
-  // n, found in `part` (a part of h), as the index of the same piece in h;
-  // false if h does not hold it.
-  static bool index_in(const Hood& h, const Hood& part, Nearer& n) {
-    const auto find = [&](const auto& list, const auto& same) {
-      for (std::size_t k = 0; k < list.size(); ++k)
-        if (same(list[k])) {
-          n.which = k;
-          return true;
-        }
-      return false;
-    };
-    switch (n.kind) {
-      case Nearer::kBall:
-        return find(h.balls, [&](const Hood::Ball& b) { return b.id == part.balls[n.which].id; });
-      case Nearer::kCircle:
-        return find(h.circles, [&](const auto& c) { return c.first == part.circles[n.which].first; });
-      case Nearer::kVertex:
-        return find(h.vertices, [&](std::size_t v) { return v == part.vertices[n.which]; });
-      case Nearer::kNone: break;
-    }
-    return true;
   }
 
   // The toroidal piece of circle c for phi in [begin, end].
