@@ -188,7 +188,7 @@ void one(std::size_t n, double share, double by) {
   for (Index i = 0; i < n; i += Index(1 / share)) ids.push_back(i), to.push_back(moved[i]);
   alpha::UpdateReport report;
   const double s = seconds_of([&] { report = t.move_points(ids, to); });
-  std::printf("relocated %zu, flips %zu, rebuilt %d, %.4f s\n", report.relocated,
+  std::printf("relocated %zu, returned %zu, flips %zu, rebuilt %d, %.4f s\n", report.relocated, report.returned,
               report.flips23 + report.flips32 + report.flips41, int(report.rebuilt), s);
 }
 

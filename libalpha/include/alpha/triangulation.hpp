@@ -50,6 +50,7 @@ struct UpdateReport {
   bool rebuilt = false;         // built afresh (duplicates involved, or the repair could not be local)
   std::size_t relocated = 0;    // vertices taken out and inserted again at their new place
   std::size_t reinserted = 0;   // points inserted, the relocated ones included (hidden ones rechecked too)
+  std::size_t returned = 0;     // vertices sent back (a cell of theirs failed) that reached their new place by flips
   std::size_t flips23 = 0;      // 2-3 flips: two cells around a facet became three around an edge
   std::size_t flips32 = 0;      // 3-2 flips: the reverse
   std::size_t flips41 = 0;      // 4-1 flips: a weighted vertex of four cells became redundant (hidden)

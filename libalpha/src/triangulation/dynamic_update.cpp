@@ -163,7 +163,11 @@ public:
         for (Index c : star) check(mixed, c, [](Index) { return true; });
       }
       if (stuck_ || pending_.size() > limit_) return false;
-      if (flip_all(mixed)) break;
+      if (flip_all(mixed)) {
+        if (!retry(mixed)) break;
+        k = pending_.size();
+        continue;
+      }
       const std::size_t sent = pending_.size();
       std::vector<Index> unflipped;
       unflipped.swap(flip_queue_);
@@ -176,9 +180,58 @@ public:
       }
       if (stuck_ || pending_.size() == sent) return false;
     }
+    for (Index u : retried_) returned_ += !(pending_mark_[u] & kPending);
     // (3) Taking them out leaves the regular triangulation of the other
     // vertices at their new values.
     return take_out(pending_);
+  }
+
+  // Each vertex sent back goes to its new values again, alone and at most
+  // kRetries times, where the cells around it stay positive (and the hull convex) there:
+  // most were sent back for a cell that other moves or flips have since
+  // mended, and flips cost far less than taking out and inserting. Its
+  // star is checked as in step 2; what fails then is mended the same way.
+  // Whether one went.
+  bool retry(Kernel& mixed) {
+    std::vector<Index> star, still;
+    bool any = false;
+    for (Index u : pending_) {
+      if (pending_mark_[u] / kRetried >= kRetries || t_.status_[u] != PointStatus::vertex) {
+        still.push_back(u);
+        continue;
+      }
+      if (pending_mark_[u] < kRetried) retried_.push_back(u);
+      pending_mark_[u] += kRetried;
+      values(u, new_p_, new_w_);
+      star_of(u, star);
+      if (!fits(mixed, star)) {
+        values(u, old_p_, old_w_);
+        still.push_back(u);
+        continue;
+      }
+      pending_mark_[u] &= ~kPending, reverted_[u] = 0, any = true;
+      for (Index c : star) check(mixed, c, [](Index) { return true; });
+    }
+    pending_.swap(still);
+    return any;
+  }
+
+  // Whether the cells `star` are positively oriented and, on the hull, convex.
+  bool fits(Kernel& kernel, const std::vector<Index>& star) {
+    for (Index c : star) {
+      const Cell& cell = t_.cells_[c];
+      const int inf = t_.infinite_position(c);
+      if (inf < 0) {
+        if (kernel.orient3d(cell.v[0], cell.v[1], cell.v[2], cell.v[3]) <= 0) return false;
+        continue;
+      }
+      const auto& f = kFacet[inf];
+      for (int i = 0; i < 4; ++i) {
+        const Index far = t_.cells_[cell.n[i]].v[t_.mirror_index(c, i)];
+        if (far != kInfinite && kernel.hull_conflict(cell.v[f[0]], cell.v[f[1]], cell.v[f[2]], far)) return false;
+      }
+    }
+    return true;
   }
 
   // Takes the vertices `ids` out for good (hidden ones have nothing to do);
@@ -214,7 +267,7 @@ public:
 
   // What it did, into `report`.
   void tell(UpdateReport& report) const {
-    report.relocated = relocated_, report.reinserted = reinserted_;
+    report.relocated = relocated_, report.reinserted = reinserted_, report.returned = returned_;
     report.flips23 = flips23_, report.flips32 = flips32_, report.flips41 = flips41_;
   }
   std::vector<Index> take_free_cells() { return std::move(free_); }
@@ -232,12 +285,16 @@ private:
   std::vector<double> old_w_, new_w_;
   bool stuck_ = false;
   std::vector<Index> flip_queue_;  // cells that may have a facet to flip
-  std::vector<char> is_moved_, removed_, reverted_, pending_mark_;
-  std::vector<Index> hidden_, pending_, free_;
+  std::vector<char> is_moved_, removed_, reverted_;
+  // pending_mark_: bit 0 on the way back, above it the retries (at most kRetries).
+  static constexpr char kPending = 1, kRetried = 2;
+  static constexpr int kRetries = 2;
+  std::vector<char> pending_mark_;
+  std::vector<Index> hidden_, pending_, retried_, free_;
   std::vector<std::uint32_t> cell_stamp_;  // kDead, else the last take_out that saw it
   std::uint32_t stamp_ = 0;
   std::uint32_t walk_ = 0x9e3779b9u;  // locate's random choices
-  std::size_t relocated_ = 0, reinserted_ = 0, flips23_ = 0, flips32_ = 0, flips41_ = 0;
+  std::size_t relocated_ = 0, reinserted_ = 0, returned_ = 0, flips23_ = 0, flips32_ = 0, flips41_ = 0;
 
   // Gives the moved point u its values in `p` and `w` (old or new).
   void values(Index u, const std::vector<Vec3>& p, const std::vector<double>& w) {
@@ -486,11 +543,11 @@ private:
     Index next = kNone;
     for (Index u : {v[0], v[1], v[2], v[3], far})
       if (u != kInfinite && is_moved_[u] && !reverted_[u]) {
-        if (pending_mark_[u]) return;
+        if (pending_mark_[u] & kPending) return;
         if (next == kNone) next = u;
       }
     if (next == kNone) stuck_ = true;
-    else pending_mark_[next] = 1, pending_.push_back(next);
+    else pending_mark_[next] |= kPending, pending_.push_back(next);
   }
 
   // The cells holding vertex v.
