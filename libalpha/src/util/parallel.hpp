@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Work split across a few threads (the parallel triangulation's): the caller
+// Work split across a few threads (the triangulation, its simplices and the alpha complex): the caller
 // runs the first share itself. The work must not throw.
 #pragma once
 #include <algorithm>
