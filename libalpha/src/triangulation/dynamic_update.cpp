@@ -117,7 +117,9 @@ public:
     cell_stamp_.assign(t_.cells_.size(), 0);
     // (1) With the new values, check every cell holding a moved vertex (a
     // facet between two such cells from the one with the smaller id).
+    const bool all = moved.size() == n;
     const auto touched = [&](Index c) {
+      if (all) return true;
       for (Index v : t_.cells_[c].v)
         if (v != kInfinite && is_moved_[v]) return true;
       return false;
@@ -169,9 +171,10 @@ public:
         continue;
       }
       const std::size_t sent = pending_.size();
-      std::vector<Index> unflipped;
+      std::vector<Queued> unflipped;
       unflipped.swap(flip_queue_);
-      for (Index c : unflipped) {
+      for (const Queued& q : unflipped) {
+        const Index c = q.cell;
         const Cell& cell = t_.cells_[c];
         for (int i = 0; i < 4; ++i) {
           const Index far = t_.cells_[cell.n[i]].v[t_.mirror_index(c, i)];
@@ -284,7 +287,13 @@ private:
   std::vector<Vec3> old_p_, new_p_;
   std::vector<double> old_w_, new_w_;
   bool stuck_ = false;
-  std::vector<Index> flip_queue_;  // cells that may have a facet to flip
+  // A cell that may have a facet to flip; bit k of `regular`: facet k is
+  // locally regular (made so by the flip that made the cell).
+  struct Queued {
+    Index cell;
+    std::uint8_t regular;
+  };
+  std::vector<Queued> flip_queue_;
   std::vector<char> is_moved_, removed_, reverted_;
   // pending_mark_: bit 0 on the way back, above it the retries (at most kRetries).
   static constexpr char kPending = 1, kRetried = 2;
@@ -385,7 +394,7 @@ private:
                                                           cell.v[kFacet[inf][2]], far)
                                      : kernel.power_conflict(cell.v, far);
       if (!conflict) continue;
-      if (inf < 0 && !bad) flip_queue_.push_back(c);  // both cells finite: a flip may mend it
+      if (inf < 0 && !bad) flip_queue_.push_back({c, 0});  // both cells finite: a flip may mend it
       else take_moved(cell.v, far);
     }
   }
@@ -395,22 +404,23 @@ private:
   // an edge of degree 3. Each flip lowers the lifted surface, so this ends;
   // false when some facets flip no way (then the caller rebuilds).
   bool flip_all(Kernel& kernel) {
-    std::vector<Index> stuck;
+    std::vector<Queued> stuck;
     for (bool flipped = true; flipped;) {
       flipped = false;
       while (!flip_queue_.empty()) {
-        const Index c = flip_queue_.back();
+        const auto [c, regular] = flip_queue_.back();
         flip_queue_.pop_back();
         if (cell_stamp_[c] == kDead || t_.infinite_position(c) >= 0) continue;
         bool failing = false, done = false;
         for (int i = 0; i < 4 && !done; ++i) {
+          if (regular >> i & 1) continue;
           const Index far = t_.cells_[t_.cells_[c].n[i]].v[t_.mirror_index(c, i)];
           if (far == kInfinite || !kernel.power_conflict(t_.cells_[c].v, far)) continue;
           failing = true;
           done = flip(kernel, c, i);
         }
         flipped |= done;
-        if (failing && !done) stuck.push_back(c);
+        if (failing && !done) stuck.push_back({c, 0});
       }
       flip_queue_.swap(stuck);  // again, once others have flipped
     }
@@ -514,24 +524,31 @@ private:
     for (std::size_t j = 0; j < made.size(); ++j) {
       cells[ids[j]].v = made[j];
       cell_stamp_[ids[j]] = 0;
-      flip_queue_.push_back(ids[j]);
       for (Index u : made[j]) t_.vertex_cell_[u] = ids[j];
     }
     std::array<std::array<Index, 3>, 12> keys;  // of made[j]'s facet k at 4 j + k
     for (std::size_t j = 0; j < made.size(); ++j)
       for (int k = 0; k < 4; ++k) keys[4 * j + k] = key_of(made[j], k);
-    for (std::size_t j = 0; j < made.size(); ++j)
+    // The facets between made cells are regular: of the two ways to fill
+    // the flip's five points, the other one failed, and in general position
+    // (the perturbation) one of them is regular. Their values do not change
+    // before flip_all reads the queue.
+    for (std::size_t j = 0; j < made.size(); ++j) {
+      std::uint8_t regular = 0;
       for (int k = 0; k < 4; ++k) {
         const auto& key = keys[4 * j + k];
         Index nb = kNone;
         for (std::size_t l = 0; l < made.size() && nb == kNone; ++l)
           for (int m = 0; m < 4; ++m)
             if (l != j && keys[4 * l + m] == key) nb = ids[l];
-        if (nb == kNone)
+        if (nb != kNone) regular |= std::uint8_t(1u << k);
+        else
           for (std::size_t o = 0; o < outsides; ++o)
             if (outside[o].key == key) nb = outside[o].cell, cells[nb].n[outside[o].mirror] = ids[j];
         cells[ids[j]].n[k] = nb;
       }
+      flip_queue_.push_back({ids[j], regular});
+    }
     return true;
   }
   // One moved vertex of a failing cell (or facet) goes back at a time: a
