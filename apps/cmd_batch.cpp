@@ -22,7 +22,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -30,6 +29,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "alpha/error.hpp"
 #include "alpha/input_file.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -82,7 +82,7 @@ std::vector<molecule::BatchInput> collect_inputs(const BatchOptions& opt) {
     paths.insert(paths.end(), listed.begin(), listed.end());
   }
   std::vector<molecule::BatchInput> inputs = molecule::batch_inputs(paths);
-  if (inputs.empty()) throw std::runtime_error("no structure files in the inputs");
+  if (inputs.empty()) throw alpha::Error("no structure files in the inputs", alpha::ErrorKind::BadInput);
   return inputs;
 }
 
@@ -92,7 +92,7 @@ std::vector<molecule::BatchInput> collect_inputs(const BatchOptions& opt) {
 int print_inputs(const BatchOptions& opt) {
   for (const molecule::BatchInput& in : collect_inputs(opt)) {
     if (in.path.find_first_of("\t\r\n") != std::string::npos)
-      throw std::runtime_error(in.path + ": a path with a tab or line break cannot be listed");
+      throw alpha::Error(in.path + ": a path with a tab or line break cannot be listed", alpha::ErrorKind::BadInput);
     std::printf("%s\t%s\n", in.id.c_str(), in.path.c_str());
   }
   flush_stdout();
@@ -263,9 +263,11 @@ int run_batch(BatchOptions& opt) {
   molecule::output_directory_path(opt.output_dir);  // refuses a root or a link to nothing
   std::error_code ec;
   if (fs::exists(opt.output_dir, ec) && !fs::is_directory(opt.output_dir, ec))
-    throw std::runtime_error(opt.output_dir + ": cannot create the output directory: a file of that name exists");
+    throw alpha::Error(opt.output_dir + ": cannot create the output directory: a file of that name exists",
+                       alpha::ErrorKind::BadInput);
   if (!fs::is_directory(opt.output_dir, ec) && !fs::create_directory(opt.output_dir, ec))
-    throw std::runtime_error(opt.output_dir + ": cannot create the output directory: " + ec.message());
+    throw alpha::Error(opt.output_dir + ": cannot create the output directory: " + ec.message(),
+                       alpha::ErrorKind::BadInput);
   const unsigned jobs = opt.jobs ? opt.jobs : std::max(1u, std::thread::hardware_concurrency());
   spdlog::info("{} structures, {} worker{}, outputs {} in {}/", inputs.size(), jobs, jobs == 1 ? "" : "s",
                molecule::output_list(opt.analysis.outputs), opt.output_dir);
@@ -303,15 +305,14 @@ Subcommand add_batch_command(CLI::App& app) {
       ->capture_default_str()
       ->type_name("N")
       ->check(CLI::PositiveNumber.description(""));
-  // -o is required unless --print-inputs: a wrong command line (exit 2) either way.
+  // Some input, and -o unless --print-inputs: a wrong command line (exit 2) otherwise.
   sub->parse_complete_callback([opt] {
+    if (opt->inputs.empty() && opt->lists.empty()) throw CLI::ValidationError("batch", "no INPUT and no --list");
     if (!opt->print_inputs && opt->output_dir.empty()) throw CLI::RequiredError("-o,--output-dir");
   });
   add_structure_options(*sub, opt->analysis.structure, opt->analysis.cavities.probe);
   add_cavity_options(*sub, opt->analysis);
   return {sub, [opt, sub] {
-            if (opt->inputs.empty() && opt->lists.empty())
-              throw std::runtime_error("batch: no INPUT and no --list (see --help)");
             opt->analysis.outputs = selected_outputs(*sub, opt->outputs);
             if (opt->print_inputs) return print_inputs(*opt);
             return run_batch(*opt);

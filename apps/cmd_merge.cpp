@@ -9,13 +9,13 @@
 // structures' own outputs (DIR/<id>/) stay where they are.
 #include <filesystem>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include <spdlog/spdlog.h>
 
+#include "alpha/error.hpp"
 #include "commands.hpp"
 #include "batch/batch_tables.hpp"
 
@@ -35,7 +35,8 @@ int run_merge(const MergeOptions& opt) {
     const fs::path records = fs::path(dir) / molecule::kRecordsFile;
     std::error_code ec;
     if (!fs::is_regular_file(records, ec))
-      throw std::runtime_error(dir + ": not a batch output directory (no " + molecule::kRecordsFile + ")");
+      throw alpha::Error(dir + ": not a batch output directory (no " + molecule::kRecordsFile + ")",
+                         alpha::ErrorKind::BadInput);
     files.push_back(records.string());
   }
   std::size_t malformed = 0;
@@ -43,8 +44,9 @@ int run_merge(const MergeOptions& opt) {
   if (malformed) spdlog::warn("{} malformed record line(s) skipped (a run killed mid-write)", malformed);
   std::error_code ec;
   if (!fs::is_directory(opt.output_dir, ec) && !fs::create_directory(opt.output_dir, ec))
-    throw std::runtime_error(opt.output_dir + ": cannot create the output directory" +
-                             (ec ? ": " + ec.message() : std::string(": a file of that name exists")));
+    throw alpha::Error(opt.output_dir + ": cannot create the output directory" +
+                           (ec ? ": " + ec.message() : std::string(": a file of that name exists")),
+                       alpha::ErrorKind::BadInput);
   const std::vector<std::pair<std::string, molecule::RecordLocation>> locations(index.begin(), index.end());
   molecule::write_batch_tables(opt.output_dir, files, locations);
   spdlog::info("merged {} structures from {} directories into {}/", locations.size(), files.size(),

@@ -16,7 +16,6 @@
 #include <iterator>
 #include <memory>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -27,6 +26,7 @@
 #include <spdlog/spdlog.h>
 
 #include "alpha/alpha_complex.hpp"
+#include "alpha/error.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 
@@ -120,7 +120,7 @@ int run_persistence(const InputOptions& opt) {
     }
     for (unsigned k = 0; k < threads; ++k) {
       if (std::fwrite(texts[k].data(), 1, texts[k].size(), stdout) != texts[k].size())
-        throw std::runtime_error("cannot write to standard output");
+        throw alpha::Error("cannot write to standard output", alpha::ErrorKind::BadInput);
       lines += counts[k];
     }
   }

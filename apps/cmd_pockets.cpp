@@ -22,7 +22,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -230,7 +229,8 @@ int run_pockets(const PocketsOptions& opt) {
   Stopwatch total_time;
   const std::string& file = opt.input.file;
   if (!molecule::is_structure_file(file))
-    throw std::runtime_error(file + ": not a structure file (.pdb .ent .cif .mmcif, optionally .gz)");
+    throw alpha::Error(file + ": not a structure file (.pdb .ent .cif .mmcif, optionally .gz)",
+                       alpha::ErrorKind::BadInput);
   // First of all: a bad OUTDIR fails at once (nothing is created before
   // the outputs are written).
   const std::string outdir = opt.output_dir ? *opt.output_dir : default_output_dir(file);

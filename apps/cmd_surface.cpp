@@ -19,7 +19,6 @@
 #include <memory>
 #include <utility>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +26,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "alpha/error.hpp"
 #include "alpha/input_file.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -64,8 +64,9 @@ Measured measure(const SurfaceOptions& opt) {
   } else {
     if (!in.weighted) {
       alpha::read_input_file(in.file);  // a missing file or a directory is the first thing to say
-      throw std::runtime_error(in.file +
-                               ": a point file has no balls without --weighted (x y z r per line): its surface is empty");
+      throw alpha::Error(
+          in.file + ": a point file has no balls without --weighted (x y z r per line): its surface is empty",
+          alpha::ErrorKind::BadInput);
     }
     PointSet set = read_input(in);
     m.surface = naming_file(in.file, [&] { return molecule::measure_balls(std::move(set.points), std::move(set.weights)); });

@@ -10,12 +10,12 @@
 #include <filesystem>
 #include <memory>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <spdlog/spdlog.h>
 
+#include "alpha/error.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "interrupt.hpp"
@@ -41,13 +41,15 @@ struct TrackCommandOptions {
 void check_output_dir(const fs::path& target, const std::string& name) {
   std::error_code ec;
   if (!fs::exists(target, ec)) return;
-  if (!fs::is_directory(target, ec)) throw std::runtime_error(name + ": exists and is not a directory");
+  if (!fs::is_directory(target, ec))
+    throw alpha::Error(name + ": exists and is not a directory", alpha::ErrorKind::BadInput);
   std::set<std::string> ours;
   for (const std::string& f : molecule::track_output_names()) ours.insert(f);
   for (const fs::directory_entry& e : fs::directory_iterator(target, ec))
     if (!ours.count(e.path().filename().string()))
-      throw std::runtime_error(name + ": holds '" + e.path().filename().string() +
-                               "', not an output of alphapocket track; choose a new or empty directory");
+      throw alpha::Error(name + ": holds '" + e.path().filename().string() +
+                             "', not an output of alphapocket track; choose a new or empty directory",
+                         alpha::ErrorKind::BadInput);
 }
 
 int run_track(TrackCommandOptions& opt) {

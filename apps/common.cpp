@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <cstdio>
 #include <limits>
-#include <stdexcept>
 #include <system_error>
 #include <utility>
 
@@ -250,8 +249,9 @@ PointSet read_input(const InputOptions& opt, std::vector<molecule::Atom>* atoms)
     for (const CLI::Option* o : opt.structure_only)
       if (o->count() > 0) given += (count++ ? ", " : "") + o->get_name();
     if (count)
-      throw std::runtime_error(opt.file + ": a point file, but " + given + (count > 1 ? " are" : " is") +
-                               " for structure files (.pdb .ent .cif .mmcif, optionally .gz)");
+      throw alpha::Error(opt.file + ": a point file, but " + given + (count > 1 ? " are" : " is") +
+                             " for structure files (.pdb .ent .cif .mmcif, optionally .gz)",
+                         alpha::ErrorKind::BadInput);
     PointSet set = read_point_file(opt.file, opt.weighted);
     spdlog::info("read {} {}points from {} in {:.3f} s", set.points.size(), opt.weighted ? "weighted " : "", opt.file,
                  read_time.seconds());
@@ -288,7 +288,8 @@ AlphaInput load_alpha_complex(const InputOptions& opt) {
 
 void flush_stdout() {
   // ferror too: a failed write can leave nothing buffered for fflush to fail on.
-  if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("cannot write to standard output");
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    throw alpha::Error("cannot write to standard output", alpha::ErrorKind::BadInput);
 }
 
 }  // namespace alphapocket

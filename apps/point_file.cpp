@@ -3,9 +3,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <stdexcept>
 #include <system_error>
 
+#include "alpha/error.hpp"
 #include "alpha/input_file.hpp"
 
 namespace alphapocket {
@@ -15,8 +15,8 @@ namespace {
 // its weight r^2 within the triangulation's weight range (1e30).
 constexpr double kMaxValue = 1e15;
 
-[[noreturn]] void fail_at(const std::string& name, std::size_t line, const std::string& what) {
-  throw std::runtime_error(name + ":" + std::to_string(line) + ": " + what);
+[[noreturn]] void bad_input_at(const std::string& name, std::size_t line, const std::string& what) {
+  throw alpha::Error(name + ":" + std::to_string(line) + ": " + what, alpha::ErrorKind::BadInput);
 }
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -39,12 +39,11 @@ double parse_number(std::string_view token, const std::string& name, std::size_t
   double value = 0;
   const char* end = digits.data() + digits.size();
   const auto [ptr, ec] = std::from_chars(digits.data(), end, value, std::chars_format::general);
-  if (ec == std::errc::result_out_of_range)
-    fail_at(name, line, "number " + quoted(token) + " is out of range");
-  if (ec != std::errc() || ptr != end) fail_at(name, line, quoted(token) + " is not a number");
-  if (!std::isfinite(value)) fail_at(name, line, quoted(token) + " is not a finite number");
+  if (ec == std::errc::result_out_of_range) bad_input_at(name, line, "number " + quoted(token) + " is out of range");
+  if (ec != std::errc() || ptr != end) bad_input_at(name, line, quoted(token) + " is not a number");
+  if (!std::isfinite(value)) bad_input_at(name, line, quoted(token) + " is not a finite number");
   if (std::fabs(value) > kMaxValue)
-    fail_at(name, line, "number " + quoted(token) + " is out of range (|value| > 1e15)");
+    bad_input_at(name, line, "number " + quoted(token) + " is out of range (|value| > 1e15)");
   return value;
 }
 
@@ -63,7 +62,7 @@ PointSet parse_points(std::string_view text, const std::string& name, bool weigh
     if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
     if (line.find('\0') != std::string_view::npos)
-      fail_at(name, line_no, "contains a NUL byte: not a text point file");
+      bad_input_at(name, line_no, "contains a NUL byte: not a text point file");
     tokens.clear();
     for (std::size_t i = 0; i < line.size();) {
       if (is_space(line[i])) {
@@ -77,18 +76,19 @@ PointSet parse_points(std::string_view text, const std::string& name, bool weigh
     }
     if (tokens.empty()) continue;
     if (tokens.size() != expected)
-      fail_at(name, line_no,
-              "expected " + std::to_string(expected) + " numbers" + (weighted ? " (x y z r)" : "") +
-                  ", got " + std::to_string(tokens.size()));
+      bad_input_at(name, line_no,
+                   "expected " + std::to_string(expected) + " numbers" + (weighted ? " (x y z r)" : "") + ", got " +
+                       std::to_string(tokens.size()));
     double v[4];
     for (std::size_t k = 0; k < expected; ++k) v[k] = parse_number(tokens[k], name, line_no);
     set.points.push_back({v[0], v[1], v[2]});
     if (weighted) {
-      if (v[3] < 0) fail_at(name, line_no, "radius " + quoted(tokens[3]) + " is negative");
+      if (v[3] < 0) bad_input_at(name, line_no, "radius " + quoted(tokens[3]) + " is negative");
       set.weights.push_back(v[3] * v[3]);
     }
   }
-  if (set.points.empty()) throw std::runtime_error(name + ": no points (only comments and blank lines)");
+  if (set.points.empty())
+    throw alpha::Error(name + ": no points (only comments and blank lines)", alpha::ErrorKind::BadInput);
   return set;
 }
 

@@ -23,7 +23,7 @@ struct PointSet {
   std::vector<double> weights;  // r^2 per point; empty for unweighted input
 };
 
-// Reads a point file; throws std::runtime_error naming the file on any error
+// Reads a point file; throws alpha::Error (BadInput) naming the file on any error
 // (missing, a directory, empty, no points, a malformed line).
 PointSet read_point_file(const std::string& path, bool weighted);
 

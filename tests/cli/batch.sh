@@ -94,6 +94,9 @@ case "$case_name" in
     [[ $rc -eq 2 ]] || fail "--outputs report,movie: exit code $rc, expected 2 (a wrong command line)"
     run batch "$data/1fkgA.pdb"
     [[ $rc -eq 2 ]] || fail "no -o: exit code $rc, expected 2"
+    run batch -o "$tmp/o"
+    expect_error "batch: no INPUT and no --list (see --help)"
+    [[ $rc -eq 2 ]] || fail "no INPUT: exit code $rc, expected 2 (a wrong command line)"
     [[ ! -e "$tmp/o" ]] || fail "OUTDIR created"
     ;;
   lists)

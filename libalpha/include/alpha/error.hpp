@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Library errors: one exception type with a category a caller can act on,
-// thrown through one function. Library code never prints or exits; callers
-// decide what to do (the CLI's exit code per category: apps/main.cpp).
+// Library errors: one exception type with a category a caller can act on.
+// Every throw names its category (there is no default), so the compiler
+// checks that each one was chosen. Library code never prints or exits;
+// callers decide what to do (the CLI's exit code per category: apps/main.cpp).
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -21,15 +22,14 @@ std::string_view error_kind_name(ErrorKind kind);
 
 class Error : public std::runtime_error {
 public:
-  explicit Error(const std::string& message, ErrorKind kind = ErrorKind::BadInput)
-      : std::runtime_error(message), kind_(kind) {}
+  Error(const std::string& message, ErrorKind kind) : std::runtime_error(message), kind_(kind) {}
   ErrorKind kind() const { return kind_; }
 
 private:
   ErrorKind kind_;
 };
 
-[[noreturn]] void fail(const std::string& message, ErrorKind kind = ErrorKind::BadInput);
+[[noreturn]] void fail(const std::string& message, ErrorKind kind);
 
 // The same error (same kind) about `file`: "<file>: <message>".
 Error in_file(const std::string& file, const Error& e);

@@ -26,8 +26,8 @@ const char* sql_type(ColumnType t) {
   return t == ColumnType::Text ? "TEXT" : t == ColumnType::Integer ? "INTEGER" : "REAL";
 }
 
-[[noreturn]] void sqlite_fail(sqlite3* db, const std::string& what) {
-  alpha::fail(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"), alpha::ErrorKind::BadInput);
+[[noreturn]] void sqlite_fail(sqlite3* db, const std::string& what, alpha::ErrorKind kind) {
+  alpha::fail(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"), kind);
 }
 
 // One table's output: its text file and its prepared INSERT.
@@ -50,9 +50,10 @@ public:
     }
     out_ << '\n';
     create += ", PRIMARY KEY (" + std::string(table.primary_key) + "))";
-    if (sqlite3_exec(db_, create.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) sqlite_fail(db_, target_);
+    if (sqlite3_exec(db_, create.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK)
+      sqlite_fail(db_, target_, alpha::ErrorKind::BadInput);
     if (sqlite3_prepare_v2(db_, (insert + ")").c_str(), -1, &insert_, nullptr) != SQLITE_OK)
-      sqlite_fail(db_, target_);
+      sqlite_fail(db_, target_, alpha::ErrorKind::BadInput);
   }
   ~TableWriter() { sqlite3_finalize(insert_); }
 
@@ -76,7 +77,7 @@ public:
         sqlite3_bind_int64(insert_, k, v.get<std::int64_t>());
     }
     out_ << '\n';
-    if (sqlite3_step(insert_) != SQLITE_DONE) sqlite_fail(db_, target_);
+    if (sqlite3_step(insert_) != SQLITE_DONE) sqlite_fail(db_, target_, alpha::ErrorKind::BadInput);
   }
 
   // The last row was added: the statement is released (the database can
@@ -173,7 +174,7 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
   std::unique_ptr<sqlite3, int (*)(sqlite3*)> db_guard(db, sqlite3_close);
   if (sqlite3_exec(db, "PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF; BEGIN", nullptr, nullptr, nullptr) !=
       SQLITE_OK)
-    sqlite_fail(db, db_target);
+    sqlite_fail(db, db_target, alpha::ErrorKind::BadInput);
   std::vector<std::unique_ptr<TableWriter>> tables;
   for (const Table* t : {&kStructuresTable, &kSitesTable, &kTunnelsTable, &kFailuresTable})
     tables.push_back(std::make_unique<TableWriter>(*t, dir, db, temporaries));
@@ -234,7 +235,8 @@ void write_batch_tables(const std::string& outdir, const std::vector<std::string
   }
 
   for (auto& t : tables) t->finish();
-  if (sqlite3_exec(db, "COMMIT", nullptr, nullptr, nullptr) != SQLITE_OK) sqlite_fail(db, db_target);
+  if (sqlite3_exec(db, "COMMIT", nullptr, nullptr, nullptr) != SQLITE_OK)
+    sqlite_fail(db, db_target, alpha::ErrorKind::BadInput);
   if (sqlite3_close(db_guard.release()) != SQLITE_OK)
     alpha::fail(db_target + ": cannot close the database", alpha::ErrorKind::BadInput);
   records.close();

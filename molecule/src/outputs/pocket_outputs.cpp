@@ -80,7 +80,8 @@ std::vector<std::string> foreign_entries(const fs::path& dir, std::size_t max) {
   return foreign;
 }
 
-[[noreturn]] void refuse(const std::string& name, const std::string& why) {
+// Every refusal is of the output directory the user named: bad input.
+[[noreturn]] void bad_input(const std::string& name, const std::string& why) {
   alpha::fail(name + ": " + why, alpha::ErrorKind::BadInput);
 }
 
@@ -90,24 +91,25 @@ fs::path output_target(const std::string& name) {
   const fs::path target = output_directory_path(name);
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec))
-    refuse(name, "cannot create the output directory: a file of that name exists");
+    bad_input(name, "cannot create the output directory: a file of that name exists");
   if (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0)
-    refuse(name, "cannot write into the output directory: " + std::string(std::strerror(errno)));
+    bad_input(name, "cannot write into the output directory: " + std::string(std::strerror(errno)));
   const fs::path parent = target.parent_path();
   struct stat parent_st {};
   if (::stat(parent.c_str(), &parent_st) != 0)
-    refuse(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
-  if (!S_ISDIR(parent_st.st_mode)) refuse(name, "cannot create the output directory: " + std::string(std::strerror(ENOTDIR)));
+    bad_input(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
+  if (!S_ISDIR(parent_st.st_mode))
+    bad_input(name, "cannot create the output directory: " + std::string(std::strerror(ENOTDIR)));
   if (::access(parent.c_str(), W_OK | X_OK) != 0)
-    refuse(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
+    bad_input(name, "cannot create the output directory: " + std::string(std::strerror(errno)));
   struct stat st {};
   if (::stat(target.c_str(), &st) == 0 && st.st_dev != parent_st.st_dev)
-    refuse(name, "is a mount point: write into a directory inside it");
+    bad_input(name, "is a mount point: write into a directory inside it");
   const fs::path cwd = fs::current_path(ec);
   if (!ec && fs::exists(target, ec)) {
     const fs::path here = fs::canonical(cwd, ec);
     const auto [end, _] = std::mismatch(target.begin(), target.end(), here.begin(), here.end());
-    if (end == target.end()) refuse(name, "is the current directory or holds it; name a directory for the results");
+    if (end == target.end()) bad_input(name, "is the current directory or holds it; name a directory for the results");
   }
   return target;
 }
@@ -115,18 +117,18 @@ fs::path output_target(const std::string& name) {
 }  // namespace
 
 fs::path output_directory_path(const std::string& name) {
-  if (name.empty()) refuse("''", "not an output directory name (empty)");
+  if (name.empty()) bad_input("''", "not an output directory name (empty)");
   std::error_code ec;
   fs::path target = fs::absolute(name, ec).lexically_normal();
   if (!target.has_filename()) target = target.parent_path();
   if (fs::is_symlink(target, ec)) {
     const fs::path to = fs::read_symlink(target, ec);
     if (!fs::exists(target, ec))
-      refuse(name, "is a symbolic link to " + to.string() + ", which does not exist; remove the link or create " +
-                       to.string());
+      bad_input(name, "is a symbolic link to " + to.string() + ", which does not exist; remove the link or create " +
+                          to.string());
     target = fs::canonical(target, ec);
   }
-  if (target == target.root_path()) refuse(name, "is the root of the file system, not an output directory");
+  if (target == target.root_path()) bad_input(name, "is the root of the file system, not an output directory");
   return target;
 }
 
@@ -141,8 +143,8 @@ void PocketOutputDir::check_ours() const {
   if (!foreign.empty()) {
     std::string list;
     for (const std::string& f : foreign) list += (list.empty() ? "'" : ", '") + f + "'";
-    refuse(path_.string(), "holds files that are not alphapocket outputs (" + list +
-                               "); they would be removed: choose a new or empty directory");
+    bad_input(path_.string(), "holds files that are not alphapocket outputs (" + list +
+                                  "); they would be removed: choose a new or empty directory");
   }
 }
 

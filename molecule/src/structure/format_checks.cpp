@@ -190,7 +190,7 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
   std::size_t shortest = 0;                                                               // of the atom records
   for_each_line(text, [&](std::size_t line_number, std::string_view line) {
     if (is_end_record(line)) return false;
-    const auto error = [&](const std::string& what) {
+    const auto bad_input = [&](const std::string& what) {
       fail(name, "line " + std::to_string(line_number) + ": " + what, alpha::ErrorKind::BadInput);
     };
     // gemmi reads the distance of a SSBOND or LINK record longer than 73
@@ -203,23 +203,24 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
         length = std::min(text.size(), text.find('\n', end) + 1) - std::size_t(line.data() - text.data());
       }
       if (length > 73 && length < 78)
-        error(std::string(trimmed(line.substr(0, 6))) + " record ends inside its distance field (columns 74-78)");
+        bad_input(std::string(trimmed(line.substr(0, 6))) + " record ends inside its distance field (columns 74-78)");
     }
     const bool atom = equals_ci(line.substr(0, 4), "atom");
     if (!atom && !equals_ci(line.substr(0, 4), "heta")) return true;
     const std::string_view record = atom ? "ATOM" : "HETATM";
     if (line.data() == text.data() + last_line && line.size() < shortest)
-      error(std::string(record) + " record cut short by the end of the file (" + std::to_string(line.size()) +
-            " columns and no line end, the others have " + std::to_string(shortest) + " or more): truncated file");
+      bad_input(std::string(record) + " record cut short by the end of the file (" + std::to_string(line.size()) +
+                " columns and no line end, the others have " + std::to_string(shortest) + " or more): truncated file");
     shortest = shortest ? std::min(shortest, line.size()) : line.size();
-    if (line.size() < 54) error(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
+    if (line.size() < 54)
+      bad_input(std::string(record) + " record shorter than 54 columns ('" + std::string(line) + "')");
     if (!is_pdb_number(line.substr(30, 8)) || !is_pdb_number(line.substr(38, 8)) || !is_pdb_number(line.substr(46, 8)))
-      error("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
-            std::string(line.substr(30, 24)) + "')");
+      bad_input("bad coordinates in " + std::string(record) + " record (columns 31-54: '" +
+                std::string(line.substr(30, 24)) + "')");
     for (std::size_t column = 30; column < 54; column += 8)
       if (std::fabs(std::strtod(std::string(line.substr(column, 8)).c_str(), nullptr)) > kMaxCoordinate)
-        error("coordinate '" + std::string(line.substr(column, 8)) + "' (columns " + std::to_string(column + 1) + "-" +
-              std::to_string(column + 8) + ") is beyond 1e6 A");
+        bad_input("coordinate '" + std::string(line.substr(column, 8)) + "' (columns " + std::to_string(column + 1) +
+                  "-" + std::to_string(column + 8) + ") is beyond 1e6 A");
     // Columns 77-78 as gemmi reads them: an element when either is a letter.
     if (!old_columns && line.size() > 76 &&
         (std::isalpha(static_cast<unsigned char>(line[76])) ||
@@ -228,8 +229,8 @@ void check_pdb_records(std::string_view text, const std::string& name, bool old_
       if (gemmi::find_element(symbol.c_str()) == gemmi::El::X) unknown.emplace(symbol, line_number);
     }
     if (!old_columns && line.size() >= 79 && !is_pdb_charge(line[78], line.size() >= 80 ? line[79] : ' '))
-      error("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
-            "')");
+      bad_input("bad charge in " + std::string(record) + " record (columns 79-80: '" + std::string(line.substr(78, 2)) +
+                "')");
     return true;
   });
 }
@@ -296,7 +297,7 @@ void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std:
                                   row * loop->loop.width() + position)
                 : std::size_t(block.items[position].line_number);
   };
-  const auto bad = [&](std::size_t row, std::size_t col, const std::string& what) {
+  const auto bad_input = [&](std::size_t row, std::size_t col, const std::string& what) {
     const std::string& tag = tags[col];
     fail(name,
          "line " + std::to_string(line_of(row, col)) + ": _atom_site." + tag.substr(tag[0] == '?') + " is '" +
@@ -306,31 +307,31 @@ void check_atom_site(gemmi::cif::Block& block, std::string_view text, const std:
   for (std::size_t row = 0; row < table.length(); ++row) {
     const gemmi::cif::Table::Row values = table[int(row)];
     for (const std::size_t c : {std::size_t(kId), std::size_t(kAuthSeq), std::size_t(kLabelSeq), std::size_t(kCharge)})
-      if (values.has(c) && int_overflows(values[c])) bad(row, c, "an integer beyond 2147483647");
+      if (values.has(c) && int_overflows(values[c])) bad_input(row, c, "an integer beyond 2147483647");
     for (const std::size_t c : {std::size_t(kAlt), std::size_t(kIcode)})
       if (values.has(c)) try {
           gemmi::cif::as_char(values[c], ' ');
         } catch (const std::exception&) {
-          bad(row, c, "not a single character");
+          bad_input(row, c, "not a single character");
         }
     for (const std::size_t c : {std::size_t(kLabelSeq), std::size_t(kCharge)})
       if (values.has(c)) try {
           gemmi::cif::as_int(values[c], 0);
         } catch (const std::exception&) {
-          bad(row, c, "not an integer");
+          bad_input(row, c, "not an integer");
         }
     try {
       gemmi::impl::make_seqid(values[kAuthSeq], values.has(kIcode) ? &values[kIcode] : nullptr);
     } catch (const std::exception&) {
-      bad(row, kAuthSeq, "not a residue number (an integer, optionally followed by the insertion code)");
+      bad_input(row, kAuthSeq, "not a residue number (an integer, optionally followed by the insertion code)");
     }
     for (std::size_t c = kX; c < kX + 3; ++c) {
       const std::string& v = values[c];
       const double x = gemmi::cif::as_number(v);
       if (gemmi::cif::is_null(v))
-        bad(row, c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
-      if (std::isnan(x)) bad(row, c, "not a number");
-      if (!(std::fabs(x) <= kMaxCoordinate)) bad(row, c, "beyond 1e6 A");
+        bad_input(row, c, v == "?" ? "unknown: not a coordinate" : "inapplicable: not a coordinate");
+      if (std::isnan(x)) bad_input(row, c, "not a number");
+      if (!(std::fabs(x) <= kMaxCoordinate)) bad_input(row, c, "beyond 1e6 A");
     }
     if (!gemmi::cif::is_null(values[kSymbol])) {
       const std::string element = gemmi::cif::as_string(values[kSymbol]);

@@ -26,9 +26,8 @@ fs::path directory_of(const std::string& path) {
   return dir.empty() ? fs::path(".") : dir;
 }
 
-[[noreturn]] void fail_to_create(const std::string& path, int err) {
-  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err),
-              alpha::ErrorKind::BadInput);
+[[noreturn]] void fail_to_create(const std::string& path, int err, alpha::ErrorKind kind) {
+  alpha::fail(path + ": cannot create a file in " + directory_of(path).string() + ": " + std::strerror(err), kind);
 }
 
 }  // namespace
@@ -36,9 +35,9 @@ fs::path directory_of(const std::string& path) {
 void check_can_create(const std::string& path) {
   const fs::path dir = directory_of(path);
   struct stat st {};
-  if (::stat(dir.c_str(), &st) != 0) fail_to_create(path, errno);
-  if (!S_ISDIR(st.st_mode)) fail_to_create(path, ENOTDIR);
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail_to_create(path, errno);
+  if (::stat(dir.c_str(), &st) != 0) fail_to_create(path, errno, alpha::ErrorKind::BadInput);
+  if (!S_ISDIR(st.st_mode)) fail_to_create(path, ENOTDIR, alpha::ErrorKind::BadInput);
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail_to_create(path, errno, alpha::ErrorKind::BadInput);
 }
 
 TemporaryFile::TemporaryFile(const std::string& target, TemporaryPaths* temporaries)
@@ -62,7 +61,7 @@ TemporaryFile::TemporaryFile(const std::string& target, TemporaryPaths* temporar
       if (temporaries_) temporaries_->add(path_);
       return;
     }
-    if (errno != EEXIST) fail_to_create(target, errno);
+    if (errno != EEXIST) fail_to_create(target, errno, alpha::ErrorKind::BadInput);
   }
   alpha::fail(target + ": cannot create a temporary file in " + dir.string(), alpha::ErrorKind::BadInput);
 }

@@ -121,11 +121,11 @@ void StagedDirectory::copy(const std::string& file, const fs::path& source) {
 
 void StagedDirectory::commit() {
   const auto lock = hold();
-  const auto fail_errno = [&](const std::string& what) {
-    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno), alpha::ErrorKind::BadInput);
+  const auto fail_errno = [&](const std::string& what, alpha::ErrorKind kind) {
+    alpha::fail(name_ + ": cannot " + what + ": " + std::strerror(errno), kind);
   };
   if (!exists_no_follow(target_)) {
-    if (::rename(sibling_.c_str(), target_.c_str()) != 0) fail_errno("create it");
+    if (::rename(sibling_.c_str(), target_.c_str()) != 0) fail_errno("create it", alpha::ErrorKind::BadInput);
   } else {
     const int target_fd = lock_directory(target_);  // the earlier run, at sibling_ after the swap
     if (target_fd < 0 && errno == EWOULDBLOCK)
@@ -137,19 +137,20 @@ void StagedDirectory::commit() {
       }
     } close_target{target_fd};
     if (::renameat2(AT_FDCWD, sibling_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0) {
-      if (errno != EINVAL && errno != ENOSYS && errno != EOPNOTSUPP) fail_errno("replace it");
+      if (errno != EINVAL && errno != ENOSYS && errno != EOPNOTSUPP)
+        fail_errno("replace it", alpha::ErrorKind::BadInput);
       // No exchange on this file system: the earlier directory moves aside
       // first.
       const fs::path old = target_.parent_path() / ("." + target_.filename().string() + ".alphapocket-old");
       std::error_code ec;
       fs::remove_all(old, ec);
       if (temporaries_) temporaries_->add(old.string());
-      if (::rename(target_.c_str(), old.c_str()) != 0) fail_errno("move it aside");
+      if (::rename(target_.c_str(), old.c_str()) != 0) fail_errno("move it aside", alpha::ErrorKind::BadInput);
       if (::rename(sibling_.c_str(), target_.c_str()) != 0) {
         const int err = errno;
         ::rename(old.c_str(), target_.c_str());  // back in place
         errno = err;
-        fail_errno("replace it");
+        fail_errno("replace it", alpha::ErrorKind::BadInput);
       }
       fs::remove_all(old, ec);
       if (temporaries_) temporaries_->erase(old.string());
