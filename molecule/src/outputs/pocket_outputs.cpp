@@ -225,7 +225,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
       for (const char* name : {"report.js", "report.css"})
         files.emplace_back(std::string(kViewerDir) + "/" + name, page_asset(name));
     }
-    files.emplace_back("report.html", report_page(run, report, mvs, copy->cif, names,
+    files.emplace_back("report.html", report_page(run, mvs, copy->cif, names,
                                                   viewer_.empty() ? std::string(kViewerDir) : viewer_));
   }
 

@@ -91,10 +91,6 @@ json cavity_list(const PocketRun& run, const std::vector<Cavity>& list, const st
   return out;
 }
 
-std::string ligand_id(const HeteroGroup& g) {
-  return g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num) + icode_text(g.icode);
-}
-
 json holding(const LigandSite& l) {
   json out = json::array();
   for (const auto& [rank, atoms] : l.holding) out.push_back({{"site", rank}, {"atoms", atoms}});
@@ -116,7 +112,7 @@ json ligand_list(const PocketRun& run) {
   json out = json::array();
   for (const LigandSite& l : ligands_of(run)) {
     const HeteroGroup& g = run.structure->hetero_groups.at(l.group);
-    const auto rank = [](std::size_t r) { return r ? json(r) : json(nullptr); };
+    LigandPlace place = ligand_place(g, l);
     out.push_back({{"id", ligand_id(g)},
                    {"name", g.residue_name},
                    {"chain", g.chain},
@@ -124,9 +120,9 @@ json ligand_list(const PocketRun& run) {
                    {"insertion_code", icode_text(g.icode)},
                    {"heavy_atoms", g.atoms.size()},
                    {"kept", g.kept},
-                   {"site", rank(l.site)},
-                   {"nearest_site", g.kept ? json(nullptr) : rank(l.nearest_site)},
-                   {"distance", g.kept || !l.nearest_site ? json(nullptr) : json(length(l.distance))},
+                   {"site", std::move(place.site)},
+                   {"nearest_site", std::move(place.nearest_site)},
+                   {"distance", std::move(place.distance)},
                    {"atoms_in_site", l.atoms_in_site},
                    {"in_sites", holding(l)}});
   }
@@ -159,12 +155,6 @@ json site_list(const PocketRun& run) {
 
 std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
 
-json profile_of(const TunnelPath& p) {
-  json out = json::array();
-  for (const ProfilePoint& q : p.profile) out.push_back({length(q.x.x), length(q.x.y), length(q.x.z), length(q.radius)});
-  return out;
-}
-
 // Cycles first (rank = their tunnel_N in pockets.pml and pockets.pdb), then
 // the tunnels and pores.
 json tunnel_list(const PocketRun& run) {
@@ -189,7 +179,7 @@ json tunnel_list(const PocketRun& run) {
     const TunnelPath* way = cycle_path(run, rank - 1);
     if (way) {
       entry["length"] = length(way->length);
-      entry["profile"] = profile_of(*way);
+      entry["profile"] = report_profile(*way);
     }
     out.push_back(std::move(entry));
   }
@@ -206,7 +196,7 @@ json tunnel_list(const PocketRun& run) {
                    {"cost", score(p.cost)},
                    {"start_point", point(p.start_point)},
                    {"mouth", point(p.mouth)},
-                   {"profile", profile_of(p)},
+                   {"profile", report_profile(p)},
                    {"lining_residues", lining_residues(atoms, p.lining_atoms)}});
   }
   return out;
@@ -245,9 +235,9 @@ std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const st
 
 std::string molecule_mesh_path(const std::string& format) { return "meshes/surface." + format; }
 
-json pocket_report(const PocketRun& run) {
+json report_input(const PocketRun& run) {
   const StructureReport& r = run.structure->report;
-  json input = {
+  return {
       {"file", run.file},
       {"format", r.format},
       {"gzipped", r.gzipped},
@@ -265,7 +255,10 @@ json pocket_report(const PocketRun& run) {
       {"hetero_groups", r.hetero_groups},
       {"warnings", r.warnings},
   };
-  json parameters = {
+}
+
+json report_parameters(const PocketRun& run) {
+  return {
       {"probe", run.options.probe},
       {"min_volume", run.options.min_volume},
       {"split_persistence", run.options.split_persistence},
@@ -278,6 +271,9 @@ json pocket_report(const PocketRun& run) {
       {"pores", run.tunnel_options.pores},
       {"alpha_sq", 0.0},
   };
+}
+
+json report_molecule(const PocketRun& run) {
   json molecule = {{"atoms", run.structure->atoms.size()},
                    {"sa_area", length(run.search->cavities.sa_area)},
                    {"sa_volume", length(run.search->cavities.sa_volume)},
@@ -288,11 +284,31 @@ json pocket_report(const PocketRun& run) {
                    {"mean_plddt", mean_plddt(*run.structure)},
                    {"tunnel_paths", num_paths(run)}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
+  return molecule;
+}
+
+std::string ligand_id(const HeteroGroup& g) {
+  return g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num) + icode_text(g.icode);
+}
+
+LigandPlace ligand_place(const HeteroGroup& g, const LigandSite& l) {
+  const auto rank = [](std::size_t r) { return r ? json(r) : json(nullptr); };
+  return {rank(l.site), g.kept ? json(nullptr) : rank(l.nearest_site),
+          g.kept || !l.nearest_site ? json(nullptr) : json(length(l.distance))};
+}
+
+json report_profile(const TunnelPath& p) {
+  json out = json::array();
+  for (const ProfilePoint& q : p.profile) out.push_back({length(q.x.x), length(q.x.y), length(q.x.z), length(q.radius)});
+  return out;
+}
+
+json pocket_report(const PocketRun& run) {
   return {
       {"alphapocket", run.version},
-      {"input", std::move(input)},
-      {"parameters", std::move(parameters)},
-      {"molecule", std::move(molecule)},
+      {"input", report_input(run)},
+      {"parameters", report_parameters(run)},
+      {"molecule", report_molecule(run)},
       {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
       {"voids", cavity_list(run, run.search->cavities.voids, "void")},
       {"sites", site_list(run)},

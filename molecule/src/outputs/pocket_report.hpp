@@ -70,6 +70,22 @@ std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const st
 std::string molecule_mesh_path(const std::string& format);
 
 nlohmann::ordered_json pocket_report(const PocketRun& run);
+// Its sections that report.html shows as they are: "input",
+// "parameters", "molecule".
+nlohmann::ordered_json report_input(const PocketRun& run);
+nlohmann::ordered_json report_parameters(const PocketRun& run);
+nlohmann::ordered_json report_molecule(const PocketRun& run);
+// A hetero group's id, e.g. "A:HEM:201".
+std::string ligand_id(const HeteroGroup& group);
+// Where a hetero group lies as report.json's ligands say it: the rank of
+// the site it lies in; for a group left out, the nearest site's and the
+// distance to it; each null where there is none.
+struct LigandPlace {
+  nlohmann::ordered_json site, nearest_site, distance;
+};
+LigandPlace ligand_place(const HeteroGroup& group, const LigandSite& site);
+// A radius profile as report.json's tunnels have it: [x, y, z, radius] per point.
+nlohmann::ordered_json report_profile(const TunnelPath& path);
 // The report as Analysis holds it (analysis.hpp keeps JSON out of its header).
 struct Report {
   nlohmann::ordered_json json;

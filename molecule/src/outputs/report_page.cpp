@@ -10,6 +10,7 @@
 #include "molecule/residues.hpp"
 #include "outputs/pocket_colors.hpp"
 #include "outputs/report_numbers.hpp"
+#include "outputs/tables.hpp"
 
 namespace molecule {
 namespace {
@@ -85,49 +86,64 @@ json cast(const TriangleMesh& mesh, const std::string& color) {
                             {"color", color}});
 }
 
-// The tables' data: report.json's sites with their cavity's MS volume,
-// depth and mouths, its tunnels, ligands and the run's description.
-json page_data(const PocketRun& run, const json& report) {
+// The residue ids (residue_id) of these atoms' residues.
+json residue_ids(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
+  json out = json::array();
+  for (const alpha::Index i : residues_of(atoms, lining)) out.push_back(residue_id(atoms[i]));
+  return out;
+}
+
+// The tables' data, numbers as report.json has them: the sites with their
+// cavity's MS volume, depth and mouths, the tunnels (tunnel_entries), the
+// ligands, and report.json's input, parameters and molecule.
+json page_data(const PocketRun& run) {
+  const Structure& st = *run.structure;
+  const Cavities& cavities = run.search->cavities;
   json sites = json::array();
-  for (const json& s : report.at("sites")) {
-    const json& c = report.at(s.at("kind") == "void" ? "voids" : "pockets").at(s.at("cavity_rank").get<std::size_t>() - 1);
-    json residues = json::array();
-    for (const json& r : s.at("lining_residues")) residues.push_back(r.at("id"));
-    sites.push_back({{"rank", s.at("rank")},
-                     {"kind", s.at("kind")},
-                     {"cavity_rank", s.at("cavity_rank")},
-                     {"probability", s.at("probability")},
-                     {"score", s.at("score")},
-                     {"sa_volume", s.at("sa_volume")},
-                     {"ms_volume", c.at("ms_volume")},
-                     {"depth", c.at("depth")},
-                     {"mouths", c.at("mouths")},
-                     {"mean_plddt", s.at("mean_plddt")},
-                     {"center", s.at("center")},
-                     {"residues", std::move(residues)},
-                     {"ligands", s.at("ligands")}});
+  std::size_t rank = 0;
+  for (const Site& s : cavities.sites) {
+    const Cavity& c = cavities.cavity(s);
+    ++rank;
+    sites.push_back({{"rank", rank},
+                     {"kind", s.is_void ? "void" : "pocket"},
+                     {"cavity_rank", s.index + 1},
+                     {"probability", report_probability(c.probability)},
+                     {"score", report_number::score(c.score)},
+                     {"sa_volume", length(c.sa_volume)},
+                     {"ms_volume", length(c.ms_volume)},
+                     {"depth", length(c.depth)},
+                     {"mouths", c.mouths.size()},
+                     {"mean_plddt", mean_plddt(st, c.lining_atoms)},
+                     {"center", point(s.center)},
+                     {"residues", residue_ids(st.atoms, c.lining_atoms)},
+                     {"ligands", site_ligands(run, rank)}});
   }
   json tunnels = json::array();
-  for (const json& t : report.at("tunnels")) {
-    json residues = json::array();
-    for (const json& r : t.at("lining_residues")) residues.push_back(r.at("id"));
-    tunnels.push_back({{"rank", t.at("rank")},
-                       {"kind", t.at("kind")},
-                       {"bottleneck_radius", t.at("bottleneck_radius")},
-                       {"bottleneck_center", t.at("bottleneck_center")},
-                       {"length", t.at("length")},
-                       {"profile", t.at("profile")},
-                       {"residues", std::move(residues)}});
-  }
+  rank = 0;
+  for (const TunnelEntry& t : tunnel_entries(run))
+    tunnels.push_back({{"rank", ++rank},
+                       {"kind", t.kind},
+                       {"bottleneck_radius", length(t.bottleneck_radius)},
+                       {"bottleneck_center", point(t.bottleneck)},
+                       {"length", t.length},
+                       {"profile", t.way ? report_profile(*t.way) : json::array()},
+                       {"residues", residue_ids(st.atoms, *t.lining_atoms)}});
   json ligands = json::array();
-  for (const json& l : report.at("ligands"))
-    ligands.push_back({{"id", l.at("id")}, {"kept", l.at("kept")}, {"site", l.at("site")},
-                       {"nearest_site", l.at("nearest_site")}, {"distance", l.at("distance")}});
+  if (run.ligands)
+    for (const LigandSite& l : *run.ligands) {
+      const HeteroGroup& g = st.hetero_groups.at(l.group);
+      LigandPlace place = ligand_place(g, l);
+      ligands.push_back({{"id", ligand_id(g)},
+                         {"kept", g.kept},
+                         {"site", std::move(place.site)},
+                         {"nearest_site", std::move(place.nearest_site)},
+                         {"distance", std::move(place.distance)}});
+    }
   return {{"file", run.file},
           {"alphapocket", run.version},
-          {"input", report.at("input")},
-          {"parameters", report.at("parameters")},
-          {"molecule", report.at("molecule")},
+          {"input", report_input(run)},
+          {"parameters", report_parameters(run)},
+          {"molecule", report_molecule(run)},
           {"sites", std::move(sites)},
           {"tunnels", std::move(tunnels)},
           {"ligands", std::move(ligands)}};
@@ -245,10 +261,10 @@ std::string html_text(const std::string& text) {
   return out;
 }
 
-std::string report_page(const PocketRun& run, const json& report, const json& mvs, const std::string& structure_cif,
+std::string report_page(const PocketRun& run, const json& mvs, const std::string& structure_cif,
                         const std::vector<std::string>& files, const std::string& viewer) {
   const std::string at = html_text(viewer) + "/";
-  json data = page_data(run, report);
+  json data = page_data(run);
   data["files"] = files;
   data["mvs"] = mvs;
   data["structure"] = structure_cif;

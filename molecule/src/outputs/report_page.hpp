@@ -33,11 +33,11 @@ namespace molecule {
 nlohmann::ordered_json molviewspec_scene(const PocketRun& run, const ViewerScene& scene,
                                          const std::string& structure_url, const PocketMeshes* meshes);
 
-// The page, from report.json's content, the scene (molviewspec_scene), the
-// text of structure.cif, the names of the files written beside it and the
-// directory of the viewer files relative to it.
-std::string report_page(const PocketRun& run, const nlohmann::ordered_json& report,
-                        const nlohmann::ordered_json& mvs, const std::string& structure_cif,
+// The page, from the run (its tables' data as report.json and the tables
+// have it: pocket_report's sections, tunnel_entries), the scene
+// (molviewspec_scene), the text of structure.cif, the names of the files
+// written beside it and the directory of the viewer files relative to it.
+std::string report_page(const PocketRun& run, const nlohmann::ordered_json& mvs, const std::string& structure_cif,
                         const std::vector<std::string>& files, const std::string& viewer);
 
 // JSON text safe inside an HTML <script> element: '<', '>' and '&' as

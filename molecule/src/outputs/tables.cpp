@@ -34,17 +34,7 @@ std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<al
 // same); null is empty.
 std::string csv_number(const json& x) { return x.is_null() ? std::string() : x.dump(); }
 
-// One entry of report.json's tunnels as the tables have it: the cycles
-// first (rank = their tunnel_N in pockets.pml and pockets.pdb), then the
-// tunnels and pores.
-struct TunnelEntry {
-  const char* kind;
-  std::string start;  // a tunnel's start; empty for cycles and pores
-  double bottleneck_radius;
-  alpha::Vec3 bottleneck;
-  json length, curvature, cost, birth_alpha_sq, death_alpha_sq;  // null where the kind has none
-  const std::vector<alpha::Index>* lining_atoms;
-};
+}  // namespace
 
 std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
   std::vector<TunnelEntry> out;
@@ -53,17 +43,16 @@ std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
     const Tunnel& t = cycles[k];
     const TunnelPath* way = cycle_path(run, k);
     out.push_back({"cycle", "", t.bottleneck_radius, t.bottleneck_center, way ? json(length(way->length)) : json(),
-                   json(), json(), t.birth_alpha_sq, t.death_alpha_sq, &t.lining_atoms});
+                   json(), json(), t.birth_alpha_sq, t.death_alpha_sq, &t.lining_atoms, way});
   }
   if (run.paths)
     for (const TunnelPath& p : *run.paths)
       out.push_back({p.pore ? "pore" : "tunnel", p.pore ? "" : run.tunnel_starts.at(p.start), p.bottleneck_radius,
                      p.bottleneck, length(p.length), std::isfinite(p.curvature) ? json(length(p.curvature)) : json(),
-                     score(p.cost), json(), json(), &p.lining_atoms});
+                     score(p.cost), json(), json(), &p.lining_atoms, &p});
   return out;
 }
 
-}  // namespace
 
 // The documented schemas (docs/outputs.md); the rows of table_rows() follow the leading columns.
 const Table kStructuresTable{"structures",
@@ -196,11 +185,11 @@ std::string tunnel_profiles_csv(const PocketRun& run) {
       out += '\n';
     }
   };
-  const std::size_t cycles = run.search->cavities.tunnels.size();
-  for (std::size_t k = 0; k < cycles; ++k)
-    if (const TunnelPath* way = cycle_path(run, k)) rows(k + 1, *way);
-  if (run.paths)
-    for (std::size_t i = 0; i < run.paths->size(); ++i) rows(cycles + i + 1, (*run.paths)[i]);
+  std::size_t rank = 0;
+  for (const TunnelEntry& t : tunnel_entries(run)) {
+    ++rank;
+    if (t.way) rows(rank, *t.way);
+  }
   return out;
 }
 
