@@ -78,13 +78,14 @@ void random_sets(int reps_small, int reps_large, std::size_t only) {
       std::vector<double> build, update;
       double relocated = 0, flips = 0;
       int rebuilt = 0;
+      alpha::Triangulation t(start);  // t0's cells, with a build's spare capacity
       for (int r = 0; r < reps; ++r) {
         const std::vector<Vec3> moved = testing::jitter(start, move.by * nn, 100 + r);
         std::vector<Index> ids;
         std::vector<Vec3> to, all = start;
         const std::size_t every = std::size_t(1 / move.share);
         for (Index i = Index(r); i < n; i += Index(every)) ids.push_back(i), to.push_back(moved[i]), all[i] = moved[i];
-        alpha::Triangulation t = t0;  // not timed
+        t = t0;  // not timed; into t's storage, as an update in place frame after frame would find it
         alpha::UpdateReport report;
         update.push_back(seconds_of([&] { report = t.move_points(ids, to); }));
         relocated = double(report.relocated) / double(n);
@@ -153,7 +154,8 @@ void trajectory(const char* path, int reps) {
     double rms = 0;
     for (std::size_t i = 0; i < next.points.size(); ++i) { const Vec3 d = next.points[i] - frames[f].points[i]; rms += alpha::dot(d, d); }
     moved_nn.push_back(std::sqrt(rms / double(next.points.size())) / mean_nearest(t0));
-    std::vector<alpha::Triangulation> copies(reps, t0);
+    std::vector<alpha::Triangulation> copies;  // built, not copied: with a build's spare capacity
+    for (int r = 0; r < reps; ++r) copies.emplace_back(frames[f].points, frames[f].weights);
     alpha::UpdateReport report;
     const double u = seconds_of([&] {
       for (auto& t : copies) report = t.move_points(next.points, next.weights);

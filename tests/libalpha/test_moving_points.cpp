@@ -97,8 +97,8 @@ TEST_CASE("small moves of every point are mended by 2-3, 3-2 and 4-1 flips", "[d
     Triangulation t(start, w0);
     std::vector<double> w = w0;
     if (weighted)
-      for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.001 * std::sin(double(i)));
-    const UpdateReport r = t.move_points(testing::jitter(start, 0.03 * mean_nearest(start), 83), w);
+      for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.0003 * std::sin(double(i)));
+    const UpdateReport r = t.move_points(testing::jitter(start, 0.02 * mean_nearest(start), 83), w);
     REQUIRE_FALSE(r.rebuilt);
     CHECK(r.flips23 > 0);
     CHECK(r.flips32 > 0);
@@ -116,7 +116,7 @@ TEST_CASE("weights that change more: facets no flip mends send a vertex back", "
   const std::vector<double> w0 = testing::random_weights(start.size(), 6, 0.0, 0.02);
   Triangulation t(start, w0);
   std::vector<double> w = w0;
-  for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.003 * std::sin(3.0 * double(i)));
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = std::max(0.0, w[i] + 0.0004 * std::sin(3.0 * double(i)));
   const UpdateReport r = t.move_points(testing::jitter(start, 0.0006, 7), w);
   REQUIRE_FALSE(r.rebuilt);
   CHECK(r.flips41 > 0);
@@ -152,14 +152,14 @@ TEST_CASE("weighted points with hidden ones: positions and weights move", "[dyna
   // A tenth of the points each round (a moved point's new place is
   // often a hidden one's), then only weights.
   for (int round = 0; round < 5; ++round) {
-    const std::vector<Vec3> to = testing::jitter(p, 0.3 * nn, 40 + round);
-    const std::vector<double> dw = testing::random_weights(w.size(), 50 + round, -0.004, 0.004);
+    const std::vector<Vec3> to = testing::jitter(p, 0.15 * nn, 40 + round);
+    const std::vector<double> dw = testing::random_weights(w.size(), 50 + round, -0.002, 0.002);
     std::vector<Index> ids;
     std::vector<Vec3> where;
     std::vector<double> ws;
     for (Index i = Index(round); i < p.size(); i += 10) {
       if (round < 4) p[i] = to[i];
-      w[i] = round < 4 ? std::max(0.0, w[i] + dw[i]) : (i % 20 ? 0.0 : 0.03);
+      w[i] = round < 4 ? std::max(0.0, w[i] + dw[i]) : (i % 20 ? w[i] * 0.75 : 0.015);
       ids.push_back(i), where.push_back(p[i]), ws.push_back(w[i]);
     }
     const UpdateReport r = t.move_points(ids, where, ws);

@@ -17,8 +17,9 @@
 // insert them at their new places with the construction's own insertion,
 // and test every hidden point again. Whatever this cannot do locally
 // (duplicates made or split, a region no 3D triangulation fills, a facet
-// no flip mends, more than 1/32 of the points to take out: then a rebuild
-// costs less) is built afresh: slower, never different.
+// no flip mends, more than 1/16 of the points sent back, or a sample of the
+// cells to check failing so often that a rebuild costs less) is built
+// afresh: slower, never different.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -96,8 +97,20 @@ public:
       slot_[moved[k]] = Index(k), new_p_[k] = t_.points_[moved[k]];
       if (!new_w_.empty()) new_w_[k] = t_.weights_[moved[k]];
     }
-    if (involves_duplicates(moved) || coincide(moved)) return false;
-    const bool mended = mend(moved);
+    if (involves_duplicates(moved)) return false;
+    // A failing facet between two positive finite cells is flipped; the
+    // rest (inverted cells, the hull) sends a moved vertex back. Beyond
+    // kMaxShare of the points sent back, taking them out and inserting
+    // them costs more than a rebuild: stop as soon as that is passed (a
+    // few always go: on a small set either costs little).
+    limit_ = std::max(n / kMaxShare, kMinLimit);
+    removed_.assign(n, 0);
+    reverted_.assign(n, 0);
+    cell_stamp_.assign(t_.cells_.size(), 0);
+    Kernel now = t_.kernel();  // reads the values as they change (mixed from step 2 on)
+    list_cells(moved);
+    if (too_far(now) || coincide(moved)) return false;
+    const bool mended = mend(now);
     for (Index u : pending_) values(u, new_p_, new_w_);  // the vertices sent back: their new values again
     if (!mended) return false;
     // (4) The vertices taken out go in at their new places, and every
@@ -108,45 +121,59 @@ public:
     return reinsert(std::move(again));
   }
 
+  // The cells step (1) checks: those holding a moved vertex, in memory
+  // order. From 1/kStarShare of the points moved, most cells hold one: all
+  // cells are read (every_); else the stars of the moved vertices are listed.
+  void list_cells(const std::vector<Index>& moved) {
+    all_ = moved.size() == t_.points_.size();
+    every_ = moved.size() * kStarShare >= t_.points_.size();
+    to_check_.clear();
+    if (every_) return;
+    std::vector<char> seen(t_.cells_.size(), 0);
+    std::vector<Index> star;
+    for (Index u : moved) {
+      if (t_.status_[u] != PointStatus::vertex) continue;
+      star_of(u, star);
+      for (Index c : star)
+        if (!seen[c]) seen[c] = 1, to_check_.push_back(c);
+    }
+    std::sort(to_check_.begin(), to_check_.end());
+  }
+  std::size_t to_check() const { return every_ ? t_.cells_.size() : to_check_.size(); }
+  Index to_check(std::size_t k) const { return every_ ? Index(k) : to_check_[k]; }
+
+  bool touched(Index c) const {
+    if (all_) return true;
+    for (Index v : t_.cells_[c].v)
+      if (v != kInfinite && is_moved_[v]) return true;
+    return false;
+  }
+  // Step (1)'s check of cell c: a facet between two cells that hold a
+  // moved vertex is checked from the one with the smaller id.
+  void check_first(Kernel& kernel, Index c) {
+    if (touched(c)) check(kernel, c, [&](Index other) { return other < c || !touched(other); });
+  }
+
+  // Whether a sample of the cells to check, every kSampleStride-th,
+  // foretells more failures (facets to flip, cells sent back) than
+  // kRebuildRate of the cells: mending would cost more than building
+  // (bench_dynamic_update: from about 0.08 NN when every point moves).
+  // What it found stays queued, and the pass finds it again, harmlessly.
+  bool too_far(Kernel& kernel) {
+    const std::size_t count = to_check();
+    std::size_t sampled = 0;
+    for (std::size_t k = kSampleStride / 2; k < count && pending_.size() <= limit_; k += kSampleStride)
+      check_first(kernel, to_check(k)), ++sampled;
+    const double failing = double(flip_queue_.size() + pending_.size());
+    return pending_.size() > limit_ ||
+           (sampled >= kMinSample && failing * double(count) > kRebuildRate * double(sampled) * double(t_.cells_.size()));
+  }
+
   // Steps (1) to (3) of a move: the moved vertices sent back are out, the
   // others in place at their new values.
-  bool mend(const std::vector<Index>& moved) {
-    const std::size_t n = t_.points_.size();
-    removed_.assign(n, 0);
-    reverted_.assign(n, 0);
-    cell_stamp_.assign(t_.cells_.size(), 0);
-    // (1) With the new values, check every cell holding a moved vertex (a
-    // facet between two such cells from the one with the smaller id).
-    const bool all = moved.size() == n;
-    const auto touched = [&](Index c) {
-      if (all) return true;
-      for (Index v : t_.cells_[c].v)
-        if (v != kInfinite && is_moved_[v]) return true;
-      return false;
-    };
-    // A failing facet between two positive finite cells is flipped; the
-    // rest (inverted cells, the hull) sends a moved vertex back. Beyond
-    // kMaxShare of the points sent back, taking them out and inserting
-    // them costs more than a rebuild: stop as soon as that is passed (a
-    // few always go: on a small set either costs little).
-    Kernel now = t_.kernel();  // reads the values as they change (mixed from step 2 on)
-    limit_ = std::max(n / kMaxShare, kMinLimit);
-    const auto check_touched = [&](Index c) { check(now, c, [&](Index other) { return other < c || !touched(other); }); };
-    if (moved.size() * kStarShare >= n) {  // most cells hold one: all, in memory order
-      for (Index c = 0; c < t_.cells_.size() && pending_.size() <= limit_; ++c)
-        if (touched(c)) check_touched(c);
-    } else {  // the cells of the moved vertices' stars, in memory order
-      std::vector<char> seen(t_.cells_.size(), 0);
-      std::vector<Index> cells, star;
-      for (Index u : moved) {
-        if (t_.status_[u] != PointStatus::vertex) continue;
-        star_of(u, star);
-        for (Index c : star)
-          if (!seen[c]) seen[c] = 1, cells.push_back(c);
-      }
-      std::sort(cells.begin(), cells.end());
-      for (std::size_t k = 0; k < cells.size() && pending_.size() <= limit_; ++k) check_touched(cells[k]);
-    }
+  bool mend(Kernel& now) {
+    // (1) With the new values, check every cell holding a moved vertex.
+    for (std::size_t k = 0; k < to_check() && pending_.size() <= limit_; ++k) check_first(now, to_check(k));
     if (pending_.size() > limit_) return false;
     // (2) The moved vertices of what failed go back to their old values,
     // and so do those of what then fails around them, and the failing
@@ -277,11 +304,15 @@ public:
 
 private:
   static constexpr std::uint32_t kDead = ~0u;
-  static constexpr std::size_t kMaxShare = 32;  // of the points taken out and inserted, at most 1/kMaxShare
+  static constexpr std::size_t kMaxShare = 16;  // of the points sent back (most return by flips), at most 1/kMaxShare
   static constexpr std::size_t kMinLimit = 64;   // or this many
   static constexpr std::size_t kStarShare = 8;   // from 1/kStarShare of the points moved, check all cells
+  static constexpr std::size_t kSampleStride = 32, kMinSample = 32;  // the sample that may foretell a rebuild
+  static constexpr double kRebuildRate = 1.0 / 6;  // failures per cell beyond which a rebuild costs less
   std::size_t limit_ = 0;
   Triangulation& t_;
+  bool all_ = false, every_ = false;  // every point moved; most did (see list_cells)
+  std::vector<Index> to_check_;
   // The moved points' old and new values, and each one's place in them (kNone: not moved).
   std::vector<Index> slot_;
   std::vector<Vec3> old_p_, new_p_;
