@@ -63,7 +63,8 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
       a.meshes = pocket_meshes(a.search, options.mesh_resolution);
       a.search.bodies = {};  // what they were kept for is done
     }
-    a.ligands = ligand_sites(a.structure, a.search);
+    // The ligands' sites are read by the report and the output files only.
+    if (options.report) a.ligands = ligand_sites(a.structure, a.search);
     const auto start = std::chrono::steady_clock::now();
     std::vector<TunnelStart> starts;
     try {

@@ -61,7 +61,7 @@ struct AnalysisOptions {
   TunnelOptions tunnels;            // --tunnel-probe, --pores
   SiteRanking ranking = SiteRanking::probability;
   double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A (Analysis::meshes)
-  bool report = true;  // Analysis::report made (track reads the search, not the report)
+  bool report = true;  // Analysis::report made, and ligands (read by it and the writers only)
 };
 
 // Everything one structure produced; owns all of it.
