@@ -409,6 +409,15 @@ TEST_CASE("Cavities: a ring of balls is a tunnel with its analytic bottleneck", 
   CHECK(norm(tn.bottleneck_center) < 1e-12);  // the ring's centre
   for (Index a : tn.lining_atoms) CHECK(a < 12);
   CHECK(cav.voids.empty());
+  // Without tunnels (as track asks): none, and the pockets as before.
+  molecule::CavityOptions options;
+  options.probe = probe;
+  options.min_volume = 0;
+  options.tunnels = false;
+  const Cavities without = molecule::find_cavities(b.complex(), b.radii, options);
+  CHECK(without.tunnels.empty());
+  REQUIRE(without.pockets.size() == cav.pockets.size());
+  for (std::size_t k = 0; k < cav.pockets.size(); ++k) CHECK(without.pockets[k].cells == cav.pockets[k].cells);
 }
 
 TEST_CASE("Cavities: a grid of balls has one void per cube, with analytic spectrum values", "[cavities]") {

@@ -229,6 +229,7 @@ struct CavityOptions {
   // Threads measuring the cavities (0 counts as 1); the results are the
   // same, bit for bit, for any number.
   unsigned threads = 1;
+  bool tunnels = true;  // Cavities::tunnels found (from the complex's persistence pairs)
 };
 
 // The two bodies find_cavities measures the cavities with: the

@@ -398,9 +398,10 @@ Cavities find_cavities(const alpha::AlphaComplex& ac, const std::vector<double>&
   rank_cavities(out.voids);
   out.sites = rank_sites(out);
   const Index level = builder.level();
-  for (const alpha::PersistencePair& p : ac.persistence())
-    if (p.dim == 1 && p.birth < level && p.death >= level && p.death != alpha::kNever)
-      out.tunnels.push_back(make_tunnel(ac, p, radii, options.probe));
+  if (options.tunnels)
+    for (const alpha::PersistencePair& p : ac.persistence())
+      if (p.dim == 1 && p.birth < level && p.death >= level && p.death != alpha::kNever)
+        out.tunnels.push_back(make_tunnel(ac, p, radii, options.probe));
   std::stable_sort(out.tunnels.begin(), out.tunnels.end(),
                    [](const Tunnel& a, const Tunnel& b) { return a.death_alpha_sq > b.death_alpha_sq; });
   if (bodies) *bodies = std::move(builder).bodies();

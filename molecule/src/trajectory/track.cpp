@@ -29,6 +29,7 @@ TrackResult track(FrameSource& frames, const TrackOptions& options, const std::f
   PocketTracker tracker(options.min_lining_overlap);
   AnalysisOptions analysis = options.analysis;
   analysis.report = false;
+  analysis.cavities.tunnels = false;  // Cavities::tunnels are the report's: track follows the tunnel paths
   analysis.outputs.meshes = false;  // no frame's meshes are made: the search keeps no solvent bodies
   const unsigned jobs = std::max(1u, options.jobs);
   if (jobs > 1) analysis.cavities.threads = 1;  // the frames are the threads' work
