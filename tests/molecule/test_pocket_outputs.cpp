@@ -29,6 +29,7 @@
 #include "molecule/analysis.hpp"
 #include "molecule/ligand_sites.hpp"
 #include "molecule/pocket_search.hpp"
+#include "molecule/residues.hpp"
 #include "molecule/structure.hpp"
 #include "outputs/structure_copy.hpp"
 #include "outputs/tables.hpp"

@@ -28,7 +28,7 @@
 
 namespace molecule {
 
-struct PocketRun;       // pocket_report.hpp
+struct PocketRun;       // outputs/pocket_run.hpp
 struct Report;          // pocket_report.hpp: report.json as JSON
 class PocketOutputDir;  // pocket_outputs.hpp
 
@@ -82,7 +82,7 @@ struct Analysis {
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
   std::shared_ptr<const Report> report;  // pocket_report(run()) if options.report; report_text() is its file
 
-  // The writers' view of it (pocket_report.hpp; borrows from *this: keep
+  // The writers' view of it (outputs/pocket_run.hpp; borrows from *this: keep
   // *this alive and in place).
   PocketRun run() const;
 };

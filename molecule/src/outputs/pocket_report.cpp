@@ -1,14 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "outputs/pocket_report.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <span>
 
-#include "alpha/error.hpp"
 #include "molecule/residues.hpp"
 #include "outputs/report_numbers.hpp"
-#include "molecule/ligand_sites.hpp"
+#include "outputs/result_entries.hpp"
 
 namespace molecule {
 namespace {
@@ -17,12 +14,6 @@ using json = nlohmann::ordered_json;  // keys in the documented order
 
 using report_number::length;
 using report_number::score;
-
-std::vector<alpha::Index> all_atoms(std::size_t n) {
-  std::vector<alpha::Index> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = alpha::Index(i);
-  return out;
-}
 
 json point(const alpha::Vec3& p) { return json::array({length(p.x), length(p.y), length(p.z)}); }
 
@@ -35,9 +26,10 @@ json lining_atoms(const std::vector<Atom>& atoms, const std::vector<alpha::Index
   return out;
 }
 
-json lining_residues(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& indices) {
+// The residues given by their first atoms (residues_of).
+json lining_residues(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& residues) {
   json out = json::array();
-  for (const alpha::Index i : residues_of(atoms, indices)) {
+  for (const alpha::Index i : residues) {
     const Atom& a = atoms[i];
     out.push_back({{"id", residue_id(a)},
                    {"chain", a.chain},
@@ -79,7 +71,7 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
       {"fill_alpha_sq", c.fill_alpha_sq},
       {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
       {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},
-      {"lining_residues", lining_residues(atoms, c.lining_atoms)},
+      {"lining_residues", lining_residues(atoms, residues_of(atoms, c.lining_atoms))},
   };
   if (!run.mesh_format.empty()) e["mesh"] = cavity_mesh_path(kind, rank, run.mesh_format);
   return e;
@@ -95,16 +87,6 @@ json holding(const LigandSite& l) {
   json out = json::array();
   for (const auto& [rank, atoms] : l.holding) out.push_back({{"site", rank}, {"atoms", atoms}});
   return out;
-}
-
-// The run's ligand sites; a structure with hetero groups must have them.
-std::span<const LigandSite> ligands_of(const PocketRun& run) {
-  const std::span<const LigandSite> ligands = run.ligands ? std::span(*run.ligands) : std::span<const LigandSite>();
-  if (ligands.size() != run.structure->hetero_groups.size())
-    alpha::fail("pocket_report: " + std::to_string(ligands.size()) + " ligand sites for " +
-                    std::to_string(run.structure->hetero_groups.size()) + " hetero groups",
-                alpha::ErrorKind::Misuse);
-  return ligands;
 }
 
 // Every hetero group with the site that holds it (molecule/ligand_sites.hpp).
@@ -147,87 +129,47 @@ json site_list(const PocketRun& run) {
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(s.center)},
                    {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
-                   {"lining_residues", lining_residues(run.structure->atoms, c.lining_atoms)},
+                   {"lining_residues", lining_residues(run.structure->atoms, residues_of(run.structure->atoms, c.lining_atoms))},
                    {"ligands", site_ligands(run, rank)}});
   }
   return out;
 }
 
-std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
+// The keys of each kind in the documented order.
+json tunnel_entry(const std::vector<Atom>& atoms, const TunnelEntry& t) {
+  if (t.is_cycle())
+    return {{"rank", t.rank},
+            {"kind", t.kind},
+            {"birth_alpha_sq", t.birth_alpha_sq},
+            {"death_alpha_sq", t.death_alpha_sq},
+            {"bottleneck_radius", length(t.bottleneck_radius)},
+            {"bottleneck_center", point(t.bottleneck)},
+            {"length", t.length},
+            {"path", t.path},
+            {"profile", t.way ? report_profile(*t.way) : json::array()},
+            {"lining_atoms", lining_atoms(atoms, *t.lining_atoms)},
+            {"lining_residues", lining_residues(atoms, t.residues)}};
+  return {{"rank", t.rank},
+          {"kind", t.kind},
+          {"start", t.start},
+          {"bottleneck_radius", length(t.bottleneck_radius)},
+          {"bottleneck_center", point(t.bottleneck)},
+          {"length", t.length},
+          {"curvature", t.curvature},
+          {"cost", t.cost},
+          {"start_point", point(t.way->start_point)},
+          {"mouth", point(t.way->mouth)},
+          {"profile", report_profile(*t.way)},
+          {"lining_residues", lining_residues(atoms, t.residues)}};
+}
 
-// Cycles first (rank = their tunnel_N in pockets.pml and pockets.pdb), then
-// the tunnels and pores.
 json tunnel_list(const PocketRun& run) {
-  const std::vector<Atom>& atoms = run.structure->atoms;
-  const std::size_t cycles = run.search->cavities.tunnels.size();
   json out = json::array();
-  std::size_t rank = 0;
-  for (const Tunnel& t : run.search->cavities.tunnels) {
-    json entry = {{"rank", ++rank},
-                  {"kind", "cycle"},
-                  {"birth_alpha_sq", t.birth_alpha_sq},
-                  {"death_alpha_sq", t.death_alpha_sq},
-                  {"bottleneck_radius", length(t.bottleneck_radius)},
-                  {"bottleneck_center", point(t.bottleneck_center)},
-                  {"length", nullptr},
-                  {"path", nullptr},
-                  {"profile", json::array()},
-                  {"lining_atoms", lining_atoms(atoms, t.lining_atoms)},
-                  {"lining_residues", lining_residues(atoms, t.lining_atoms)}};
-    const std::size_t through = path_through(run, t);
-    if (through != std::size_t(-1)) entry["path"] = cycles + through + 1;
-    const TunnelPath* way = cycle_path(run, rank - 1);
-    if (way) {
-      entry["length"] = length(way->length);
-      entry["profile"] = report_profile(*way);
-    }
-    out.push_back(std::move(entry));
-  }
-  for (std::size_t i = 0; i < num_paths(run); ++i) {
-    const TunnelPath& p = (*run.paths)[i];
-    const auto finite = [](double x) { return std::isfinite(x) ? json(length(x)) : json(nullptr); };
-    out.push_back({{"rank", ++rank},
-                   {"kind", p.pore ? "pore" : "tunnel"},
-                   {"start", p.pore ? json(nullptr) : json(run.tunnel_starts.at(p.start))},
-                   {"bottleneck_radius", length(p.bottleneck_radius)},
-                   {"bottleneck_center", point(p.bottleneck)},
-                   {"length", length(p.length)},
-                   {"curvature", finite(p.curvature)},
-                   {"cost", score(p.cost)},
-                   {"start_point", point(p.start_point)},
-                   {"mouth", point(p.mouth)},
-                   {"profile", report_profile(p)},
-                   {"lining_residues", lining_residues(atoms, p.lining_atoms)}});
-  }
+  for (const TunnelEntry& t : tunnel_entries(run)) out.push_back(tunnel_entry(run.structure->atoms, t));
   return out;
 }
 
 }  // namespace
-
-const TunnelPath* cycle_path(const PocketRun& run, std::size_t k) {
-  if (!run.cycle_paths || k >= run.cycle_paths->size() || (*run.cycle_paths)[k].profile.empty()) return nullptr;
-  return &(*run.cycle_paths)[k];
-}
-
-std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank) {
-  std::vector<std::string> out;
-  for (const LigandSite& l : ligands_of(run))
-    if (l.lies_in(rank)) out.push_back(ligand_id(run.structure->hetero_groups[l.group]));
-  return out;
-}
-
-json report_probability(double p) { return std::isnan(p) ? json() : json(report_number::probability(p)); }
-
-json mean_plddt(const Structure& structure) { return mean_plddt(structure, all_atoms(structure.atoms.size())); }
-
-json mean_plddt(const Structure& structure, const std::vector<alpha::Index>& atoms) {
-  if (!structure.report.predicted) return nullptr;
-  const std::vector<alpha::Index> residues = residues_of(structure.atoms, atoms);
-  if (residues.empty()) return nullptr;
-  double sum = 0;
-  for (const alpha::Index i : residues) sum += structure.atoms[i].b_factor;
-  return length(sum / double(residues.size()));
-}
 
 std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const std::string& format) {
   return "meshes/" + kind + "_" + std::to_string(rank) + "." + format;
@@ -282,13 +224,9 @@ json report_molecule(const PocketRun& run) {
                    {"sites", run.search->cavities.sites.size()},
                    {"tunnels", run.search->cavities.tunnels.size()},
                    {"mean_plddt", mean_plddt(*run.structure)},
-                   {"tunnel_paths", num_paths(run)}};
+                   {"tunnel_paths", run.paths ? run.paths->size() : 0}};
   if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
   return molecule;
-}
-
-std::string ligand_id(const HeteroGroup& g) {
-  return g.chain + ':' + g.residue_name + ':' + std::to_string(g.seq_num) + icode_text(g.icode);
 }
 
 LigandPlace ligand_place(const HeteroGroup& g, const LigandSite& l) {
@@ -319,22 +257,6 @@ json pocket_report(const PocketRun& run) {
 
 std::string report_file_text(const nlohmann::ordered_json& report) {
   return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
-}
-
-}  // namespace molecule
-
-namespace molecule {
-
-std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
-  for (std::size_t i = 0; i < num_paths(run); ++i) {
-    const TunnelPath& p = (*run.paths)[i];
-    if (std::find(p.triangles.begin(), p.triangles.end(), cycle.bottleneck_triangle) != p.triangles.end()) return i;
-    // Ties: another triangle with the same narrowest point (a ring of
-    // cocircular atoms, all triangles of its disc centred alike).
-    for (const alpha::Vec3& x : p.centreline)
-      if (norm(x - cycle.bottleneck_center) < 1e-9) return i;
-  }
-  return std::size_t(-1);
 }
 
 }  // namespace molecule

@@ -10,7 +10,7 @@
 #include "molecule/residues.hpp"
 #include "outputs/pocket_colors.hpp"
 #include "outputs/report_numbers.hpp"
-#include "outputs/tables.hpp"
+#include "outputs/result_entries.hpp"
 
 namespace molecule {
 namespace {
@@ -86,10 +86,10 @@ json cast(const TriangleMesh& mesh, const std::string& color) {
                             {"color", color}});
 }
 
-// The residue ids (residue_id) of these atoms' residues.
-json residue_ids(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
+// The ids (residue_id) of the residues given by their first atoms (residues_of).
+json residue_ids(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& residues) {
   json out = json::array();
-  for (const alpha::Index i : residues_of(atoms, lining)) out.push_back(residue_id(atoms[i]));
+  for (const alpha::Index i : residues) out.push_back(residue_id(atoms[i]));
   return out;
 }
 
@@ -115,19 +115,18 @@ json page_data(const PocketRun& run) {
                      {"mouths", c.mouths.size()},
                      {"mean_plddt", mean_plddt(st, c.lining_atoms)},
                      {"center", point(s.center)},
-                     {"residues", residue_ids(st.atoms, c.lining_atoms)},
+                     {"residues", residue_ids(st.atoms, residues_of(st.atoms, c.lining_atoms))},
                      {"ligands", site_ligands(run, rank)}});
   }
   json tunnels = json::array();
-  rank = 0;
   for (const TunnelEntry& t : tunnel_entries(run))
-    tunnels.push_back({{"rank", ++rank},
+    tunnels.push_back({{"rank", t.rank},
                        {"kind", t.kind},
                        {"bottleneck_radius", length(t.bottleneck_radius)},
                        {"bottleneck_center", point(t.bottleneck)},
                        {"length", t.length},
                        {"profile", t.way ? report_profile(*t.way) : json::array()},
-                       {"residues", residue_ids(st.atoms, *t.lining_atoms)}});
+                       {"residues", residue_ids(st.atoms, t.residues)}});
   json ligands = json::array();
   if (run.ligands)
     for (const LigandSite& l : *run.ligands) {

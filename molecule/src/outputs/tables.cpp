@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "outputs/tables.hpp"
 
-#include <cmath>
 
 #include "molecule/residues.hpp"
 #include "outputs/report_numbers.hpp"
+#include "outputs/result_entries.hpp"
 
 namespace molecule {
 namespace {
@@ -15,10 +15,11 @@ constexpr ColumnType T = ColumnType::Text, I = ColumnType::Integer, R = ColumnTy
 using report_number::length;
 using report_number::score;
 
-// The residues of these atoms by id (residue_id), one space between them.
-std::string residue_words(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
+// The ids (residue_id) of the residues given by their first atoms
+// (residues_of), one space between them.
+std::string residue_words(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& residues) {
   std::string out;
-  for (const alpha::Index i : residues_of(atoms, lining)) {
+  for (const alpha::Index i : residues) {
     if (!out.empty()) out += ' ';
     out += residue_id(atoms[i]);
   }
@@ -26,8 +27,8 @@ std::string residue_words(const std::vector<Atom>& atoms, const std::vector<alph
 }
 
 // The lining_residues and residues columns: how many residues, and their ids.
-std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& lining) {
-  return ',' + std::to_string(residues_of(atoms, lining).size()) + ',' + csv_field(residue_words(atoms, lining));
+std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<alpha::Index>& residues) {
+  return ',' + std::to_string(residues.size()) + ',' + csv_field(residue_words(atoms, residues));
 }
 
 // A number as report.json has it (the shortest text that reads back the
@@ -35,24 +36,6 @@ std::string residue_columns(const std::vector<Atom>& atoms, const std::vector<al
 std::string csv_number(const json& x) { return x.is_null() ? std::string() : x.dump(); }
 
 }  // namespace
-
-std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
-  std::vector<TunnelEntry> out;
-  const std::vector<Tunnel>& cycles = run.search->cavities.tunnels;
-  for (std::size_t k = 0; k < cycles.size(); ++k) {
-    const Tunnel& t = cycles[k];
-    const TunnelPath* way = cycle_path(run, k);
-    out.push_back({"cycle", "", t.bottleneck_radius, t.bottleneck_center, way ? json(length(way->length)) : json(),
-                   json(), json(), t.birth_alpha_sq, t.death_alpha_sq, &t.lining_atoms, way});
-  }
-  if (run.paths)
-    for (const TunnelPath& p : *run.paths)
-      out.push_back({p.pore ? "pore" : "tunnel", p.pore ? "" : run.tunnel_starts.at(p.start), p.bottleneck_radius,
-                     p.bottleneck, length(p.length), std::isfinite(p.curvature) ? json(length(p.curvature)) : json(),
-                     score(p.cost), json(), json(), &p.lining_atoms, &p});
-  return out;
-}
-
 
 // The documented schemas (docs/outputs.md); the rows of table_rows() follow the leading columns.
 const Table kStructuresTable{"structures",
@@ -95,15 +78,14 @@ json table_rows(const PocketRun& run) {
          length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area), length(c.depth),
          c.mouths.size(), length(c.mouth_area), score(c.buriedness), c.burial_atoms, length(c.max_probe_radius),
          length(s.center.x), length(s.center.y), length(s.center.z), mean_plddt(st, c.lining_atoms),
-         residues_of(st.atoms, c.lining_atoms).size(), residue_words(st.atoms, c.lining_atoms),
+         residues_of(st.atoms, c.lining_atoms).size(), residue_words(st.atoms, residues_of(st.atoms, c.lining_atoms)),
          ligands.empty() ? json(nullptr) : json(ligands)}));
   }
   json tunnels = json::array();
-  rank = 0;
   for (const TunnelEntry& t : tunnel_entries(run))
-    tunnels.push_back(json::array({++rank, t.kind, length(t.bottleneck_radius), length(t.bottleneck.x),
+    tunnels.push_back(json::array({t.rank, t.kind, length(t.bottleneck_radius), length(t.bottleneck.x),
                                    length(t.bottleneck.y), length(t.bottleneck.z), t.length, t.birth_alpha_sq,
-                                   t.death_alpha_sq, residue_words(st.atoms, *t.lining_atoms)}));
+                                   t.death_alpha_sq, residue_words(st.atoms, t.residues)}));
   return {{"structure", std::move(structure)}, {"sites", std::move(sites)}, {"tunnels", std::move(tunnels)}};
 }
 
@@ -154,7 +136,7 @@ std::string pockets_csv(const PocketRun& run) {
     for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
                            length(c.center.z)})
       out += ',' + csv_number(x);
-    out += residue_columns(atoms, c.lining_atoms) + ',' + csv_number(mean_plddt(*run.structure, c.lining_atoms)) +
+    out += residue_columns(atoms, residues_of(atoms, c.lining_atoms)) + ',' + csv_number(mean_plddt(*run.structure, c.lining_atoms)) +
            '\n';
   }
   return out;
@@ -165,13 +147,12 @@ std::string tunnels_csv(const PocketRun& run) {
       "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
       "lining_residues,residues\n";
   const std::vector<Atom>& atoms = run.structure->atoms;
-  std::size_t rank = 0;
   for (const TunnelEntry& t : tunnel_entries(run)) {
-    out += std::to_string(++rank) + ',' + t.kind + ',' + csv_field(t.start);
+    out += std::to_string(t.rank) + ',' + t.kind + ',' + table_value(t.start, false);
     for (const double x : {t.bottleneck_radius, t.bottleneck.x, t.bottleneck.y, t.bottleneck.z})
       out += ',' + csv_number(length(x));
     out += ',' + csv_number(t.length) + ',' + csv_number(t.curvature) + ',' + csv_number(t.cost) +
-           residue_columns(atoms, *t.lining_atoms) + '\n';
+           residue_columns(atoms, t.residues) + '\n';
   }
   return out;
 }
@@ -185,11 +166,8 @@ std::string tunnel_profiles_csv(const PocketRun& run) {
       out += '\n';
     }
   };
-  std::size_t rank = 0;
-  for (const TunnelEntry& t : tunnel_entries(run)) {
-    ++rank;
-    if (t.way) rows(rank, *t.way);
-  }
+  for (const TunnelEntry& t : tunnel_entries(run))
+    if (t.way) rows(t.rank, *t.way);
   return out;
 }
 

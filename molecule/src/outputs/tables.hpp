@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "outputs/pocket_report.hpp"
+#include "outputs/pocket_run.hpp"
 
 namespace molecule {
 
@@ -30,21 +30,6 @@ struct Table {
 };
 
 extern const Table kStructuresTable, kSitesTable, kTunnelsTable, kFailuresTable;
-
-// One entry of report.json's tunnels as the tables and report.html have
-// it: the cycles first (rank = their tunnel_N in pockets.pml and
-// pockets.pdb), then the tunnels and pores.
-struct TunnelEntry {
-  const char* kind;
-  std::string start;  // a tunnel's start; empty for cycles and pores
-  double bottleneck_radius;
-  alpha::Vec3 bottleneck;
-  // Null where the kind has none; rounded as report.json has them.
-  nlohmann::ordered_json length, curvature, cost, birth_alpha_sq, death_alpha_sq;
-  const std::vector<alpha::Index>* lining_atoms;
-  const TunnelPath* way;  // its radius profile's: a cycle's way through (null: none found), the path itself
-};
-std::vector<TunnelEntry> tunnel_entries(const PocketRun& run);
 
 // The rows of the tables a run gives, without the structure's id:
 // {"structure": [...], "sites": [[...], ...], "tunnels": [[...], ...]}, in

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "alpha/sizes.hpp"
+#include "molecule/residues.hpp"
 #include "outputs/pocket_colors.hpp"
 
 namespace molecule {
