@@ -246,10 +246,11 @@ public:
   // follows the cells that changed.
   void update(std::span<const Index> order, std::vector<Index> free_cells, Index hint) {
     const std::size_t n = t_.points_.size();
+    reserve_huge(o_.input, n);
     o_.input.resize(n);
     std::iota(o_.input.begin(), o_.input.end(), Index(0));
     kernel_ = Kernel(t_.points_.data(), t_.weights_.empty() ? nullptr : t_.weights_.data());
-    cell_mark_.assign(cells_.size(), 0);
+    assign_huge(cell_mark_, cells_.size(), std::uint32_t(0));
     free_cells_ = std::move(free_cells);
     for (Index p : order) {
       infinite_conflicts_ = 0;
