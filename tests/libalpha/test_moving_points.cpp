@@ -89,6 +89,31 @@ TEST_CASE("moving random points gives the fresh build's cells", "[dynamic]") {
   }
 }
 
+TEST_CASE("moves too large to mend are foretold by a sample of the cells and rebuilt at once", "[dynamic]") {
+  const std::vector<Vec3> start = testing::random_points(3000, 61);
+  const double nn = mean_nearest(start);
+  for (const double step : {0.01, 0.02, 0.3, 0.5}) {
+    INFO("step " << step);
+    Triangulation t(start);
+    const UpdateReport r = t.move_points(testing::jitter(start, step * nn, 62));
+    // Every point moved: small steps are mended, large ones rebuilt
+    // before anything is flipped (the sample's rate, not the limit).
+    REQUIRE(r.rebuilt == (step > 0.1));
+    REQUIRE(r.foretold == (step > 0.1));
+    require_fresh(t);
+  }
+  // A few points moved far: too few cells to judge, mended.
+  Triangulation t(start);
+  const std::vector<Vec3> far = testing::jitter(start, 2 * nn, 63);
+  std::vector<Index> ids;
+  std::vector<Vec3> where;
+  for (Index i = 0; i < start.size(); i += 300) ids.push_back(i), where.push_back(far[i]);
+  const UpdateReport r = t.move_points(ids, where);
+  REQUIRE_FALSE(r.rebuilt);
+  REQUIRE_FALSE(r.foretold);
+  require_fresh(t);
+}
+
 TEST_CASE("small moves of every point are mended by 2-3, 3-2 and 4-1 flips", "[dynamic]") {
   for (const bool weighted : {false, true}) {
     INFO("weighted " << weighted);

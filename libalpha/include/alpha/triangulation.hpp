@@ -48,6 +48,7 @@ int affine_dimension(const std::vector<Vec3>& points);
 // What a dynamic update did.
 struct UpdateReport {
   bool rebuilt = false;         // built afresh (duplicates involved, or the repair could not be local)
+  bool foretold = false;        // rebuilt at once: a sample of the cells to check failed too often to mend
   std::size_t relocated = 0;    // vertices taken out and inserted again at their new place
   std::size_t reinserted = 0;   // points inserted, the relocated ones included (hidden ones rechecked too)
   std::size_t returned = 0;     // vertices sent back (a cell of theirs failed) that reached their new place by flips

@@ -117,7 +117,8 @@ public:
     assign_huge(cell_stamp_, t_.cells_.size(), std::uint32_t(0));
     Kernel now = t_.kernel();  // reads the values as they change (mixed from step 2 on)
     list_cells(moved);
-    if (too_far(now) || coincide(moved)) return false;
+    foretold_ = too_far(now);
+    if (foretold_ || coincide(moved)) return false;
     const bool mended = mend(now);
     for (Index u : pending_) values(u, new_p_, new_w_);  // the vertices sent back: their new values again
     if (!mended) return false;
@@ -165,16 +166,16 @@ public:
     if (touched(c)) check(kernel, c, [&](Index other) { return other < c || !touched(other); });
   }
 
-  // Whether a sample of the cells to check (every kSampleStride-th, at
-  // least kMinSample of them) foretells more failures (facets to flip,
-  // cells sent back) than kRebuildRate of the cells: mending would cost
-  // more than building (bench_dynamic_update: from about 0.08 NN when every
-  // point moves). Fewer cells to check are not judged. What the sample
+  // Whether a sample of the cells to check (1/kSampleStride of them, at
+  // least kMinSample and at most kSample, evenly spread) foretells more failures (facets to flip, cells sent back) than
+  // kRebuildRate of the cells: mending would cost more than building
+  // (bench_dynamic_update: from about 0.08 NN when every point moves).
+  // Fewer than kMinSample cells to check are not judged. What the sample
   // found stays queued, and the pass finds it again, harmlessly.
   bool too_far(Kernel& kernel) {
     const std::size_t count = to_check();
     if (count < kMinSample) return false;
-    const std::size_t stride = std::min(count / kMinSample, kSampleStride);
+    const std::size_t stride = count / std::clamp(count / kSampleStride, kMinSample, kSample);
     std::size_t sampled = 0;
     for (std::size_t k = stride / 2; k < count && pending_.size() <= limit_; k += stride)
       check_first(kernel, to_check(k)), ++sampled;
@@ -315,17 +316,19 @@ public:
     report.flips23 = flips23_, report.flips32 = flips32_, report.flips41 = flips41_;
   }
   std::vector<Index> take_free_cells() { return std::move(free_); }
+  bool foretold() const { return foretold_; }
 
 private:
   static constexpr std::uint32_t kDead = ~0u;
   static constexpr std::size_t kMaxShare = 16;  // of the points sent back (most return by flips), at most 1/kMaxShare
   static constexpr std::size_t kMinLimit = 64;   // or this many
   static constexpr std::size_t kStarShare = 64;  // from 1/kStarShare of the points moved, check all cells
-  static constexpr std::size_t kSampleStride = 32, kMinSample = 128;  // the sample that may foretell a rebuild
+  static constexpr std::size_t kSampleStride = 32, kMinSample = 128, kSample = 2048;  // the sample that may foretell a rebuild
   static constexpr double kRebuildRate = 1.0 / 6;  // failures per cell beyond which a rebuild costs less
   std::size_t limit_ = 0;
   Triangulation& t_;
   bool all_ = false, every_ = false;  // every point moved; most did (see list_cells)
+  bool foretold_ = false;             // too_far said so
   std::vector<Index> to_check_;
   // The moved points' old and new values, and each one's place in them (kNone: not moved).
   std::vector<Index> slot_;
@@ -868,7 +871,7 @@ UpdateReport Triangulation::move_points(std::span<const Index> ids, std::span<co
     updater.tell(report);
     return report;
   }
-  report.rebuilt = true;
+  report.rebuilt = true, report.foretold = updater.foretold();
   std::vector<Vec3> now = points_;
   std::vector<double> now_w = weights_;
   try {
