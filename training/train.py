@@ -51,7 +51,7 @@ CLUSTER_SHARE = 0.6           # molecule::kSiteClusterShare
 RECENTERING_RADIUS = 6.0      # molecule::kRecenteringRadius (A)
 BURIED_POINT_ATOMS = 95       # molecule::kBuriedPointAtoms
 LEADING = ["kind", "cavity_rank", "site_rank", "center_x", "center_y", "center_z"]
-TRAILING = ["ligandability", "probability"]  # alphapocket's own margin and probability
+TRAILING = ["ligandability", "probability", "rank_score"]  # alphapocket's own margin, probability and rank score
 
 
 def read_ds(dataset):
@@ -307,6 +307,22 @@ class Bagged:
         return np.mean([m.feature_importances_ for m in self.models], axis=0)
 
 
+class Hybrid:
+    """A classifier, whose calibrated margin is each candidate's probability (and decides which pockets are sites),
+    and a ranker, whose margin orders the sites: both bagged over the same seeds."""
+
+    def __init__(self, classifier, ranker):
+        self.classifier, self.ranker = classifier, ranker
+        self.models = classifier.models + ranker.models
+
+    def decision_function(self, X):
+        return self.classifier.decision_function(X)
+
+    @property
+    def feature_importances_(self):
+        return self.classifier.feature_importances_
+
+
 class PairwiseRanker:
     """xgboost's gradient-boosted trees fitted to rank each structure's ligand sites above its other candidates
     (rank:pairwise, a group per structure) rather than to classify each candidate on its own; kept as the model
@@ -361,8 +377,11 @@ def tree_values(t, X):
 
 
 def make_model(a, first_seed=0):
-    """The model of the options: a.bag gradient-boosted models of seeds first_seed.. (ranking or classifying), or
-    a random forest."""
+    """The model of the options: a.bag gradient-boosted models of seeds first_seed.. (ranking, classifying or
+    both: hybrid), or a random forest."""
+    if a.model == "hybrid":
+        classify, rank = (make_model(argparse.Namespace(**{**vars(a), "model": m}), first_seed) for m in ("gb", "rank"))
+        return Hybrid(classify, rank)
     if a.model == "rank":
         return Bagged([PairwiseRanker(a.trees, a.rate, a.depth, a.max_features, seed)
                        for seed in range(first_seed, first_seed + a.bag)])
@@ -381,11 +400,15 @@ def fit_one(model, X, y, group):
 def fit_models(jobs, n_jobs):
     """Fits (model, X, y, structure of each row) jobs, a bagged model's members each on its own, on n_jobs
     processes (the fits are deterministic: the same models whatever n_jobs)."""
-    tasks = [(m, X, y, g) for model, X, y, g in jobs for m in (model.models if isinstance(model, Bagged) else [model])]
+    tasks = [(m, X, y, g) for model, X, y, g in jobs
+             for m in (model.models if isinstance(model, (Bagged, Hybrid)) else [model])]
     fitted = iter(Parallel(n_jobs=n_jobs)(delayed(fit_one)(m, X, y, g) for m, X, y, g in tasks))
     out = []
     for model, *_ in jobs:
-        if isinstance(model, Bagged):
+        if isinstance(model, Hybrid):
+            out.append(Hybrid(Bagged([next(fitted) for _ in model.classifier.models]),
+                              Bagged([next(fitted) for _ in model.ranker.models])))
+        elif isinstance(model, Bagged):
             out.append(Bagged([next(fitted) for _ in model.models]))
         else:
             out.append(next(fitted))
@@ -393,12 +416,22 @@ def fit_models(jobs, n_jobs):
 
 
 def margin(model, X):
-    if isinstance(model, Bagged):
+    if isinstance(model, (Bagged, Hybrid)):
         return model.decision_function(X)
     return model.predict_proba(X)[:, 1]
 
 
+def rank_score(model, X):
+    """The score that orders the sites: a hybrid's ranker's margin, another model's margin."""
+    return margin(model.ranker if isinstance(model, Hybrid) else model, X)
+
+
 def export(model, names, iso, trained_on):
+    if isinstance(model, Hybrid):  # the classifier's model, the ranker's trees as its "ranking"
+        out, ranker = export(model.classifier, names, iso, trained_on), export(model.ranker, names, iso, trained_on)
+        out["kind"] += " (probability), " + ranker["kind"] + " (ranking)"
+        out["ranking"] = {k: ranker[k] for k in ("init", "scale", "trees")}
+        return out
     if isinstance(model, Bagged) and isinstance(model.models[0], PairwiseRanker):  # the mean of their margins
         assert len({m.init for m in model.models}) == 1
         return {"format": "alphapocket ligandability model 1", "kind": f"{len(model.models)} x xgboost rank:pairwise",
@@ -467,9 +500,9 @@ def run_sample(a):
 
 
 def check(a, rebuilt, iso, names, runs):
-    """0 when the rebuilt model is the committed one, scikit-learn gives the fixture's margins and probabilities
-    (alphapocket's own agree with them: test_ligandability.cpp) and alphapocket's of every cavity of the
-    sample `runs` (run_sample) to 1e-6; else prints what differs and returns 1."""
+    """0 when the rebuilt model is the committed one, scikit-learn gives the fixture's margins, probabilities and
+    rank scores (alphapocket's own agree with them: test_ligandability.cpp) and alphapocket's of every cavity of
+    the sample `runs` (run_sample) to 1e-6; else prints what differs and returns 1."""
     problems = []
     text = model_text(export(rebuilt, names, iso, a.train.split(",")))
     with open(MODEL) as f:
@@ -481,44 +514,44 @@ def check(a, rebuilt, iso, names, runs):
                         + (", ".join(differ) or "only the text"))
     with open(FIXTURE) as f:
         rows = list(csv.reader(f))
-    assert rows[0][3:-2] == names, "the fixture's features are not the model's"
-    X = np.array([[float(x) for x in r[3:-2]] for r in rows[1:]])
-    want = np.array([[float(x) for x in r[-2:]] for r in rows[1:]])
+    assert rows[0][3:-3] == names, "the fixture's features are not the model's"
+    X = np.array([[float(x) for x in r[3:-3]] for r in rows[1:]])
+    want = np.array([[float(x) for x in r[-3:]] for r in rows[1:]])
     m = margin(rebuilt, X)
-    worst = np.abs(want - np.column_stack([m, iso.predict(m)])).max(axis=0)
+    worst = np.abs(want - np.column_stack([m, iso.predict(m), rank_score(rebuilt, X)])).max(axis=0)
     print(f"{len(X)} pockets-dev sites of the fixture: scikit-learn vs the fixture, largest difference "
-          f"{worst[0]:.3g} (margin), {worst[1]:.3g} (probability)")
+          f"{worst[0]:.3g} (margin), {worst[1]:.3g} (probability), {worst[2]:.3g} (rank score)")
     if not worst.max() <= 1e-9:
-        problems.append("scikit-learn's margins or probabilities of tests/data/ligandability/pockets-dev.csv's sites "
-                        "are not the fixture's")
+        problems.append("scikit-learn's margins, probabilities or rank scores of tests/data/ligandability/pockets-dev.csv's "
+                        "sites are not the fixture's")
     for name, header, fresh in runs:
         X = np.array([[float(r[i]) for i in range(len(header)) if header[i] in names] for r in fresh])
         m = margin(rebuilt, X)
         cpp = np.array([[float(x) for x in r[-len(TRAILING):]] for r in fresh])
-        worst = np.abs(cpp - np.column_stack([m, iso.predict(m)])).max(axis=0)
+        worst = np.abs(cpp - np.column_stack([m, iso.predict(m), rank_score(rebuilt, X)])).max(axis=0)
         print(f"{name}: alphapocket vs scikit-learn, largest difference {worst[0]:.3g} (margin), "
-              f"{worst[1]:.3g} (probability)")
+              f"{worst[1]:.3g} (probability), {worst[2]:.3g} (rank score)")
         if not worst.max() <= 1e-6:
-            problems.append(f"alphapocket's margins or probabilities of {name} differ from scikit-learn's by more "
-                            "than 1e-6")
+            problems.append(f"alphapocket's margins, probabilities or rank scores of {name} differ from scikit-learn's "
+                            "by more than 1e-6")
     for p in problems:
         print("FAIL: " + p, file=sys.stderr)
     return 1 if problems else 0
 
 
 def cross_validated(a, Xfit, y, group, fit_rows, seeds):
-    """The out-of-fold margins of a grouped (by structure) 5-fold cross-validation, the folds, the isotonic
-    calibration fitted on those margins, and the models of `seeds` seed sets fitted on every row; all fits
-    run at once on a.jobs processes."""
+    """The out-of-fold margins and rank scores of a grouped (by structure) 5-fold cross-validation, the folds, the
+    isotonic calibration fitted on those margins, and the models of `seeds` seed sets fitted on every row; all
+    fits run at once on a.jobs processes."""
     folds = list(GroupKFold(5).split(Xfit, y, group))
     everything = np.arange(len(y))
     jobs = [(make_model(a), tr) for tr, _ in folds] + [(make_model(a, s * a.bag), everything) for s in range(seeds)]
     models = fit_models([(m, Xfit[r[fit_rows[r]]], y[r[fit_rows[r]]], group[r[fit_rows[r]]]) for m, r in jobs], a.jobs)
-    oof = np.zeros(len(y))
+    oof, oof_rank = np.zeros(len(y)), np.zeros(len(y))
     for (_, te), m in zip(folds, models):
-        oof[te] = margin(m, Xfit[te])
+        oof[te], oof_rank[te] = margin(m, Xfit[te]), rank_score(m, Xfit[te])
     iso = IsotonicRegression(out_of_bounds="clip", y_min=0, y_max=1).fit(oof, y)
-    return folds, oof, iso, models[len(folds):]
+    return folds, oof, oof_rank, iso, models[len(folds):]
 
 
 def main():
@@ -527,7 +560,7 @@ def main():
     ap.add_argument("--data", default=os.path.join(ROOT, "..", "shared", "data"))
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "training"),
                     help="features are cached here (delete it after changing alphapocket)")
-    ap.add_argument("--model", default="gb", choices=["gb", "rank", "rf"])
+    ap.add_argument("--model", default="hybrid", choices=["hybrid", "gb", "rank", "rf"])
     ap.add_argument("--bag", type=int, default=BAG, help="gradient-boosted models averaged (seeds 0..BAG-1)")
     ap.add_argument("--trees", type=int, default=TREES, help="trees of each gradient-boosted model")
     ap.add_argument("--rate", type=float, default=RATE, help="their learning rate")
@@ -581,7 +614,7 @@ def main():
     Xfit = X.copy()
     Xfit[:, [i for i in range(len(names)) if i not in keep]] = 0
     fit_rows = np.ones(len(y), bool) if a.all_cavities else candidate
-    folds, oof, iso, models = cross_validated(a, Xfit, y, group, fit_rows, 1 if a.check else a.seeds)
+    folds, oof, oof_rank, iso, models = cross_validated(a, Xfit, y, group, fit_rows, 1 if a.check else a.seeds)
     if a.check:
         sys.exit(check(a, models[0], iso, names, runs))
 
@@ -621,14 +654,14 @@ def main():
     shipped = None
     spread = {}
     for s_, model in enumerate(models):
-        dm_s = margin(model, dXfit)
+        dm_s, dr_s = margin(model, dXfit), rank_score(model, dXfit)
         dp_s = iso.predict(dm_s)
         dsites_s = (dcandidate & ~dis_void & (dp_s >= a.min_probability)) | dholds
         print(f"seeds {s_ * a.bag}-{s_ * a.bag + a.bag - 1}:")
-        for k, f in report("  dev", dev, dset, dchains, dgroup, dsites_s, dlog_score, dcenters, dm_s, dp_s).items():
+        for k, f in report("  dev", dev, dset, dchains, dgroup, dsites_s, dlog_score, dcenters, dr_s, dp_s).items():
             spread.setdefault(k, []).append(f)
         if shipped is None:
-            shipped, dm, dp, dsites = model, dm_s, dp_s, dsites_s
+            shipped, dm, dr, dp, dsites = model, dm_s, dr_s, dp_s, dsites_s
     model = shipped
     if a.seeds > 1:
         for k, fs_ in spread.items():
@@ -641,9 +674,9 @@ def main():
     print(f"model {a.model}, label {a.label}, {'all cavities' if a.all_cavities else 'sites'}, "
           f"{len(names) - len(dropped)} features; {fit_rows.sum()} training rows ({y[fit_rows].sum()} positive) "
           f"from {len(train)} structures")
-    report("train CV", train, tset, chains, group, sites, log_score, centers, oof, oof_p)
+    report("train CV", train, tset, chains, group, sites, log_score, centers, oof_rank, oof_p)
     report("train geometric", train, tset, chains, group, sites, log_score, centers, log_score, None)
-    report("dev", dev, dset, dchains, dgroup, dsites, dlog_score, dcenters, dm, dp)
+    report("dev", dev, dset, dchains, dgroup, dsites, dlog_score, dcenters, dr, dp)
     report("dev geometric", dev, dset, dchains, dgroup, dsites, dlog_score, dcenters, dlog_score, None)
     for label, structures, g_, cand, s_, c_ in (("train", train, group, candidate, sites, centers),
                                                ("dev", dev, dgroup, dcandidate, dsites, dcenters)):
@@ -669,10 +702,10 @@ def main():
         f.write(model_text(export(model, names, iso, a.train.split(","))))
     write_feature_cache(train, tset)
     with open(FIXTURE, "w") as f:
-        f.write("structure,kind,cavity_rank," + ",".join(names) + ",margin,probability\n")
+        f.write("structure,kind,cavity_rank," + ",".join(names) + ",margin,probability,rank_score\n")
         for i in np.where(ds_)[0]:
-            f.write(",".join(dids[i] + [repr(float(x)) for x in dX[i]] + [repr(float(dm[i])), repr(float(dp[i]))])
-                    + "\n")
+            f.write(",".join(dids[i] + [repr(float(x)) for x in dX[i]] +
+                             [repr(float(dm[i])), repr(float(dp[i])), repr(float(dr[i]))]) + "\n")
     print("wrote molecule/data/ligandability.json, training/features.csv.gz and tests/data/ligandability/pockets-dev.csv")
 
 

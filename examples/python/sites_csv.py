@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """A structure's candidate binding sites as a CSV table (no pandas needed),
-ranked by the ligandability model's probability.
+ranked by the ligandability model.
 
 Usage: sites_csv.py STRUCTURE [OUT.csv]   (stdout without OUT.csv)
 """

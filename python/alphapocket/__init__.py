@@ -100,7 +100,7 @@ class Analysis:
     def features(self):
         """The same as columns: a dict from the CSV's header names (kind,
         cavity_rank, site_rank, center_x.., the model's features,
-        ligandability, probability) to numpy arrays (kind: a list of str);
+        ligandability, probability, rank_score) to numpy arrays (kind: a list of str);
         pandas.DataFrame(analysis.features()) makes a table of it."""
         lines = self.features_csv().splitlines()
         names = lines[0].split(",")

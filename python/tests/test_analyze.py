@@ -107,11 +107,15 @@ def test_options_reach_the_search(pdb_analysis):
 
 
 def test_sites_carry_the_ligandability_probability(pdb_analysis):
-    """Sites are ranked by the model's probability (as the CLI's default),
-    each with .probability in [0, 1]; ranking="geometric" orders by score."""
+    """Sites are ranked by the model's rank score (as the CLI's default; the
+    features' rank_score column), each with .probability in [0, 1];
+    ranking="geometric" orders by score."""
     sites = pdb_analysis.sites
     assert all(0 <= s.probability <= 1 for s in sites)
-    assert [s.probability for s in sites] == sorted((s.probability for s in sites), reverse=True)
+    columns = pdb_analysis.features()
+    by_rank = sorted((r, x) for r, x in zip(columns["site_rank"], columns["rank_score"]) if r > 0)
+    assert [r for r, _ in by_rank] == list(range(1, len(sites) + 1))
+    assert [x for _, x in by_rank] == sorted((x for _, x in by_rank), reverse=True)
     assert all(s.probability == s.cavity.probability for s in sites)
     geometric = alphapocket.analyze(PDB, ranking="geometric", tunnels_from="none")
     assert [s.score for s in geometric.sites] == sorted((s.score for s in geometric.sites), reverse=True)

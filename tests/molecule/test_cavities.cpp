@@ -290,7 +290,7 @@ bool same(const Cavity& a, const Cavity& b) {
                       bits(c.depth),        bits(c.center.x),     bits(c.center.y),         bits(c.center.z),
                       bits(c.max_alpha_sq), bits(c.max_probe_radius), bits(c.close_alpha_sq), bits(c.fill_alpha_sq),
                       bits(c.mouth_area),   bits(c.buriedness),   bits(c.score),            bits(c.ligandability),
-                      bits(c.probability)};
+                      bits(c.probability),  bits(c.rank_score)};
   };
   const auto mouths = [&](const Cavity& c) {
     std::vector<std::tuple<std::vector<Index>, std::uint64_t, bool>> m;

@@ -38,7 +38,7 @@ struct FixtureRow {
   std::string structure, kind;
   std::size_t cavity_rank = 0;
   std::vector<double> features;
-  double margin = 0, probability = 0;
+  double margin = 0, probability = 0, rank_score = 0;
 };
 
 std::vector<FixtureRow> read_fixture(std::vector<std::string>& header) {
@@ -51,8 +51,9 @@ std::vector<FixtureRow> read_fixture(std::vector<std::string>& header) {
   while (std::getline(in, line)) {
     const std::vector<std::string> f = split(line);
     REQUIRE(f.size() == header.size());
-    FixtureRow r{f[0], f[1], std::stoul(f[2]), {}, std::stod(f[f.size() - 2]), std::stod(f.back())};
-    for (std::size_t k = 3; k + 2 < f.size(); ++k) r.features.push_back(std::stod(f[k]));
+    FixtureRow r{f[0], f[1], std::stoul(f[2]), {}, std::stod(f[f.size() - 3]), std::stod(f[f.size() - 2]),
+                 std::stod(f.back())};
+    for (std::size_t k = 3; k + 3 < f.size(); ++k) r.features.push_back(std::stod(f[k]));
     rows.push_back(std::move(r));
   }
   return rows;
@@ -72,25 +73,28 @@ const std::string kToyTree =
 
 }  // namespace
 
-TEST_CASE("ligandability: the compiled-in model gives scikit-learn's margin and probability on every pockets-dev site",
+TEST_CASE("ligandability: the compiled-in model gives scikit-learn's margin, probability and rank score on every "
+          "pockets-dev site",
           "[ligandability]") {
   std::vector<std::string> header;
   const std::vector<FixtureRow> rows = read_fixture(header);
-  const std::vector<std::string> names(header.begin() + 3, header.end() - 2);
+  const std::vector<std::string> names(header.begin() + 3, header.end() - 3);
   CHECK(names == molecule::site_feature_names());
   std::map<std::string, int> structures;
   for (const FixtureRow& r : rows) ++structures[r.structure];
   CHECK(structures.size() == 40);  // every pockets-dev structure has sites
   const LigandabilityModel& model = molecule::default_ligandability_model();
-  double worst_margin = 0, worst_probability = 0;
+  double worst_margin = 0, worst_probability = 0, worst_rank = 0;
   for (const FixtureRow& r : rows) {
     const double m = model.margin(r.features);
     worst_margin = std::max(worst_margin, std::fabs(m - r.margin));
     worst_probability = std::max(worst_probability, std::fabs(model.probability(m) - r.probability));
+    worst_rank = std::max(worst_rank, std::fabs(model.rank_score(r.features) - r.rank_score));
   }
   INFO(rows.size() << " sites");
   CHECK(worst_margin <= 1e-6);
   CHECK(worst_probability <= 1e-6);
+  CHECK(worst_rank <= 1e-6);
 }
 
 TEST_CASE("ligandability: alphapocket's features of a pockets-dev structure are the fixture's", "[ligandability]") {
@@ -117,6 +121,7 @@ TEST_CASE("ligandability: alphapocket's features of a pockets-dev structure are 
       }
       CHECK(std::fabs(c.ligandability - r.margin) <= 1e-6);
       CHECK(std::fabs(c.probability - r.probability) <= 1e-6);
+      CHECK(std::fabs(c.rank_score - r.rank_score) <= 1e-6);
     }
     CHECK(seen == molecule::site_candidates(search.cavities).size());
   }
@@ -315,7 +320,18 @@ TEST_CASE("ligandability: the evaluator follows a hand-made model", "[ligandabil
   CHECK(model.probability(1) == Approx(0.3).epsilon(1e-15));
   CHECK(model.probability(4) == 0.9);
   CHECK(model.probability(40) == 0.9);
+  CHECK(model.rank_score(x) == model.margin(x));  // no ranking ensemble: the margin ranks
   CHECK_THROWS_AS(model.margin(std::vector<double>(3, 0.0)), alpha::Error);
+  // A ranking ensemble (here the same tree, init -1, scale 0.5) gives the
+  // rank score and leaves the margin and probability to the classifier.
+  std::string ranked = toy_model(kToyTree);
+  ranked.insert(ranked.size() - 1, R"(,"ranking":{"init":-1,"scale":0.5,"trees":[)" + kToyTree + "]}");
+  const LigandabilityModel with_ranking(ranked);
+  CHECK(with_ranking.margin(x) == 0.5 + 2 * 3);
+  CHECK(with_ranking.rank_score(x) == -1 + 0.5 * 3);
+  x[0] = 0, x[1] = -3;
+  CHECK(with_ranking.margin(x) == 0.5 + 2 * 0.25);
+  CHECK(with_ranking.rank_score(x) == -1 + 0.5 * 0.25);
 }
 
 TEST_CASE("ligandability: malformed models are refused", "[ligandability]") {
@@ -344,6 +360,12 @@ TEST_CASE("ligandability: malformed models are refused", "[ligandability]") {
   fraction.replace(fraction.find(R"("right":[2)"), 10, R"("right":[2.5)");
   CHECK_THROWS_AS(LigandabilityModel(toy_model(fraction)), alpha::Error);
   CHECK_THROWS_AS(LigandabilityModel(R"({"format":"a\"b",)" + toy_model(kToyTree).substr(1)), alpha::Error);
+  // A ranking ensemble without its trees, or with a key of no ensemble.
+  std::string no_trees = toy_model(kToyTree), other_key = no_trees;
+  no_trees.insert(no_trees.size() - 1, R"(,"ranking":{"init":0,"scale":1})");
+  CHECK_THROWS_AS(LigandabilityModel(no_trees), alpha::Error);
+  other_key.insert(other_key.size() - 1, R"(,"ranking":{"init":0,"scale":1,"trees":[],"calibration":1})");
+  CHECK_THROWS_AS(LigandabilityModel(other_key), alpha::Error);
   CHECK_NOTHROW(LigandabilityModel(toy_model(kToyTree)));
   // White space between tokens, and notes, are read over.
   std::string spaced;
@@ -354,7 +376,7 @@ TEST_CASE("ligandability: malformed models are refused", "[ligandability]") {
   CHECK(LigandabilityModel(spaced).margin(x) == 0.5 + 2 * 3);
 }
 
-TEST_CASE("ligandability: search_pockets ranks the sites by probability, or geometrically", "[ligandability]") {
+TEST_CASE("ligandability: search_pockets ranks the sites by the model's rank score, or geometrically", "[ligandability]") {
   const molecule::Structure s = molecule::read_structure(std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb");
   const molecule::PocketSearch by_model = molecule::search_pockets(s, {});
   const molecule::PocketSearch geometric = molecule::search_pockets(s, {}, molecule::SiteRanking::geometric);
@@ -367,15 +389,27 @@ TEST_CASE("ligandability: search_pockets ranks the sites by probability, or geom
       CHECK(c.probability >= 0);
       CHECK(c.probability <= 1);
       CHECK(c.probability == molecule::default_ligandability_model().probability(c.ligandability));
+      CHECK(c.rank_score == molecule::default_ligandability_model().rank_score(molecule::SiteFeatures(s, a)(c)));
     }
   bool reordered = false;
   for (std::size_t k = 0; k < a.sites.size(); ++k) {
     if (k > 0) {
-      CHECK(a.cavity(a.sites[k - 1]).ligandability >= a.cavity(a.sites[k]).ligandability);
-      CHECK(a.cavity(a.sites[k - 1]).probability >= a.cavity(a.sites[k]).probability);
+      CHECK(a.cavity(a.sites[k - 1]).rank_score >= a.cavity(a.sites[k]).rank_score);
       CHECK(b.cavity(b.sites[k - 1]).score >= b.cavity(b.sites[k]).score);
     }
     reordered |= a.sites[k].is_void != b.sites[k].is_void || a.sites[k].index != b.sites[k].index;
   }
   CHECK(reordered);  // the two rankings differ on this structure
+  // On 1ytjA the ranker and the classifier order the sites differently: the
+  // ranker's order is kept.
+  const molecule::Structure t = molecule::read_structure(std::string(ALPHAPOCKET_TEST_DATA) + "/1ytjA.pdb");
+  const molecule::PocketSearch ytj = molecule::search_pockets(t, {});
+  const molecule::Cavities& c = ytj.cavities;
+  REQUIRE(c.sites.size() >= 2);
+  bool by_margin = true;
+  for (std::size_t k = 1; k < c.sites.size(); ++k) {
+    CHECK(c.cavity(c.sites[k - 1]).rank_score >= c.cavity(c.sites[k]).rank_score);
+    by_margin &= c.cavity(c.sites[k - 1]).ligandability >= c.cavity(c.sites[k]).ligandability;
+  }
+  CHECK(!by_margin);
 }

@@ -124,9 +124,11 @@ struct Cavity {
   double score = 0;  // geometric ranking score, larger is better (see cavity_score)
   // The ligandability model's margin and its calibrated probability that a
   // ligand binds here (molecule/ligandability_model.hpp), set by
-  // search_pockets (find_cavities leaves them NaN).
+  // search_pockets (find_cavities leaves them NaN); rank_score, the model's
+  // score that orders the sites (its ranking ensemble's margin).
   double ligandability = std::numeric_limits<double>::quiet_NaN();
   double probability = std::numeric_limits<double>::quiet_NaN();
+  double rank_score = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Tunnel {
@@ -155,7 +157,7 @@ struct Site {
   bool is_void = false;
   std::size_t index = 0;  // into Cavities::pockets, or Cavities::voids if is_void
   // Where the site's ligand is expected: the cavity's centre, or, ranked
-  // by probability, the centre of the cluster the site heads
+  // by the model, the centre of the cluster the site heads
   // (ranking/site_clusters.hpp).
   alpha::Vec3 center{};
 };
@@ -181,7 +183,7 @@ struct Cavities {
   // packing defects and water sites. Holo structures often close a lid over
   // their ligand, so a site can be a void once the ligand is removed.
   // (search_pockets leaves out the pockets of a low probability and may
-  // rank the sites by probability instead.)
+  // rank the sites by the model instead.)
   std::vector<Site> sites;
 
   const Cavity& cavity(const Site& site) const { return (site.is_void ? voids : pockets).at(site.index); }

@@ -2,13 +2,17 @@
 // The ligandability model: how likely a ligand binds in a cavity, from its
 // features (molecule/site_features.hpp). An ensemble of decision trees
 // (gradient-boosted or a random forest, fitted by training/ on
-// pockets-train) gives a margin, init + scale * sum of the trees' leaf
-// values, which ranks the sites; an isotonic map fitted on out-of-fold
-// margins turns it into a calibrated probability. The model is a JSON file
+// pockets-train and pockets-train-pb) gives a margin, init + scale * sum of
+// the trees' leaf values; an isotonic map fitted on out-of-fold margins
+// turns it into a calibrated probability. A second ensemble, when the model
+// has one (its "ranking"), fitted to rank each structure's ligand sites
+// above its other candidates, gives the score that orders the sites;
+// without one the margin orders them. The model is a JSON file
 // (training/ writes it; format in training/README.md); the default one,
 // molecule/data/ligandability.json, is compiled into the binary.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,15 +33,25 @@ public:
   // between its knots, constant beyond them (scikit-learn's
   // IsotonicRegression with out_of_bounds="clip").
   double probability(double margin) const;
+  // The score that orders the sites (larger first): the ranking ensemble's
+  // margin, or margin() when the model has none.
+  double rank_score(const std::vector<double>& features) const;
+
+  // An ensemble of trees and its margin.
+  struct Trees {
+    struct Node {
+      int feature, left, right;  // left -1: a leaf; children indexed within the tree
+      double threshold, value;
+    };
+    std::vector<Node> nodes;        // all trees' nodes, tree by tree
+    std::vector<std::size_t> roots;  // where each tree starts in nodes
+    double init = 0, scale = 1;
+    double margin(const std::vector<double>& features) const;
+  };
 
 private:
-  struct Node {
-    int feature, left, right;  // left -1: a leaf; children indexed within the tree
-    double threshold, value;
-  };
-  std::vector<Node> nodes_;        // all trees' nodes, tree by tree
-  std::vector<std::size_t> roots_;  // where each tree starts in nodes_
-  double init_ = 0, scale_ = 1;
+  Trees classifier_;
+  std::optional<Trees> ranking_;
   std::vector<double> knots_x_, knots_y_;
 };
 

@@ -71,7 +71,8 @@ private:
 
 // The features of every pocket, then every void, as CSV with a header:
 // kind, cavity_rank, site_rank (0: not a site), centre, then the features
-// and the cavity's ligandability (the model's margin) and probability, at
+// and the cavity's ligandability (the model's margin), probability and
+// rank_score, at
 // full precision (for training/, which labels the rows by the centre and
 // checks that scikit-learn predicts the same margins).
 std::string site_features_csv(const Structure& structure, const Cavities& cavities);

@@ -11,9 +11,11 @@
 
 namespace molecule {
 
-// How Cavities::sites are ordered: by the ligandability model's
-// probability (its margin; ties in the geometric order), or by the
-// geometric score as find_cavities ranks them.
+// How Cavities::sites are ordered: by the ligandability model
+// (its rank_score; ties in the geometric order; the probability, which
+// decides which pockets are sites, comes from its classifier and need not
+// fall with the rank), or by the geometric score as find_cavities ranks
+// them.
 enum class SiteRanking { probability, geometric };
 // "probability" or "geometric" -> the ranking; throws alpha::Error (misuse)
 // naming anything else.
@@ -27,10 +29,10 @@ SiteRanking parse_site_ranking(const std::string& name);
 inline constexpr double kMinSiteProbability = 0.08;
 
 // Every pocket and void of `cavities` (found on `structure`'s atoms) gets
-// its ligandability and probability from the default model; the pockets
+// its ligandability, probability and rank_score from the default model; the pockets
 // below kMinSiteProbability are left out (a void that holds a ligand is a
 // site whatever its probability) and the sites ordered as
-// `ranking` says (by probability: with their clusters' centres,
+// `ranking` says (by the model: with their clusters' centres,
 // site_clusters.hpp, moved onto the buried surface, site_recentering.hpp).
 void rank_sites(const Structure& structure, Cavities& cavities, SiteRanking ranking = SiteRanking::probability);
 

@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "alpha/error.hpp"
 #include "molecule/site_features.hpp"
@@ -109,33 +110,49 @@ private:
 
 }  // namespace
 
-LigandabilityModel::LigandabilityModel(std::string_view text) {
-  Reader in(text);
+namespace {
+
+// Reads a tree into `trees` (its nodes after those of the trees before).
+void read_tree(Reader& in, LigandabilityModel::Trees& trees) {
   const int features = int(site_feature_names().size());
   std::vector<int> feature, left, right;
   std::vector<double> threshold, value;
-  const auto read_tree = [&] {
-    in.object({"feature", "left", "right", "threshold", "value"}, [&](std::string_view key) {
-      if (key == "feature") in.array(feature);
-      else if (key == "left") in.array(left);
-      else if (key == "right") in.array(right);
-      else if (key == "threshold") in.array(threshold);
-      else if (key == "value") in.array(value);
-      else
-        fail_model("a tree has \"" + std::string(key) + "\"", alpha::ErrorKind::BadInput);
-    });
-    const std::size_t n = feature.size();
-    if (n == 0 || left.size() != n || right.size() != n || threshold.size() != n || value.size() != n)
-      fail_model("a tree's arrays differ in length", alpha::ErrorKind::BadInput);
-    roots_.push_back(nodes_.size());
-    for (std::size_t k = 0; k < n; ++k) {
-      // Children come after their parent: every walk ends.
-      if (left[k] >= 0 && (feature[k] < 0 || feature[k] >= features || left[k] <= int(k) || right[k] <= int(k) ||
-                           left[k] >= int(n) || right[k] >= int(n)))
-        fail_model("a tree node is out of range", alpha::ErrorKind::BadInput);
-      nodes_.push_back({feature[k], left[k], right[k], threshold[k], value[k]});
-    }
-  };
+  in.object({"feature", "left", "right", "threshold", "value"}, [&](std::string_view key) {
+    if (key == "feature") in.array(feature);
+    else if (key == "left") in.array(left);
+    else if (key == "right") in.array(right);
+    else if (key == "threshold") in.array(threshold);
+    else if (key == "value") in.array(value);
+    else
+      fail_model("a tree has \"" + std::string(key) + "\"", alpha::ErrorKind::BadInput);
+  });
+  const std::size_t n = feature.size();
+  if (n == 0 || left.size() != n || right.size() != n || threshold.size() != n || value.size() != n)
+    fail_model("a tree's arrays differ in length", alpha::ErrorKind::BadInput);
+  trees.roots.push_back(trees.nodes.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    // Children come after their parent: every walk ends.
+    if (left[k] >= 0 && (feature[k] < 0 || feature[k] >= features || left[k] <= int(k) || right[k] <= int(k) ||
+                         left[k] >= int(n) || right[k] >= int(n)))
+      fail_model("a tree node is out of range", alpha::ErrorKind::BadInput);
+    trees.nodes.push_back({feature[k], left[k], right[k], threshold[k], value[k]});
+  }
+}
+
+// Reads the value of a "trees" key: an array of trees.
+void read_trees(Reader& in, LigandabilityModel::Trees& trees) {
+  in.expect('[');
+  if (!in.accept(']')) {
+    do read_tree(in, trees);
+    while (in.accept(','));
+    in.expect(']');
+  }
+}
+
+}  // namespace
+
+LigandabilityModel::LigandabilityModel(std::string_view text) {
+  Reader in(text);
   in.object({"features", "init", "scale", "trees", "calibration"}, [&](std::string_view key) {
     if (key == "features") {
       std::vector<std::string> names;
@@ -143,16 +160,21 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
       if (names != site_feature_names())
         fail_model("its features are not this version's site features", alpha::ErrorKind::BadInput);
     } else if (key == "init") {
-      init_ = in.value<double>();
+      classifier_.init = in.value<double>();
     } else if (key == "scale") {
-      scale_ = in.value<double>();
+      classifier_.scale = in.value<double>();
     } else if (key == "trees") {
-      in.expect('[');
-      if (!in.accept(']')) {
-        do read_tree();
-        while (in.accept(','));
-        in.expect(']');
-      }
+      read_trees(in, classifier_);
+    } else if (key == "ranking") {
+      Trees ranking;
+      in.object({"init", "scale", "trees"}, [&](std::string_view k) {
+        if (k == "init") ranking.init = in.value<double>();
+        else if (k == "scale") ranking.scale = in.value<double>();
+        else if (k == "trees") read_trees(in, ranking);
+        else
+          fail_model("the ranking has \"" + std::string(k) + "\"", alpha::ErrorKind::BadInput);
+      });
+      ranking_ = std::move(ranking);
     } else if (key == "calibration") {
       in.object({"x", "y"}, [&](std::string_view k) {
         if (k == "x") in.array(knots_x_);
@@ -169,17 +191,23 @@ LigandabilityModel::LigandabilityModel(std::string_view text) {
     fail_model("the calibration's knots are not sorted pairs", alpha::ErrorKind::BadInput);
 }
 
-double LigandabilityModel::margin(const std::vector<double>& features) const {
+double LigandabilityModel::Trees::margin(const std::vector<double>& features) const {
   if (features.size() != site_feature_names().size()) fail_model("wrong number of features", alpha::ErrorKind::Misuse);
   double sum = 0;
-  for (const std::size_t root : roots_) {
-    const Node* tree = &nodes_[root];
+  for (const std::size_t root : roots) {
+    const Node* tree = &nodes[root];
     int k = 0;
     while (tree[k].left >= 0)
       k = double(float(features[tree[k].feature])) <= tree[k].threshold ? tree[k].left : tree[k].right;
     sum += tree[k].value;
   }
-  return init_ + scale_ * sum;
+  return init + scale * sum;
+}
+
+double LigandabilityModel::margin(const std::vector<double>& features) const { return classifier_.margin(features); }
+
+double LigandabilityModel::rank_score(const std::vector<double>& features) const {
+  return (ranking_ ? *ranking_ : classifier_).margin(features);
 }
 
 double LigandabilityModel::probability(double m) const {

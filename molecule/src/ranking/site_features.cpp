@@ -271,7 +271,7 @@ std::vector<double> SiteFeatures::operator()(const Cavity& c) const {
 std::string site_features_csv(const Structure& structure, const Cavities& cavities) {
   std::string out = "kind,cavity_rank,site_rank,center_x,center_y,center_z";
   for (const std::string& n : site_feature_names()) out += ',' + n;
-  out += ",ligandability,probability\n";
+  out += ",ligandability,probability,rank_score\n";
   const SiteFeatures features(structure, cavities);
   char text[40];
   for (const bool voids : {false, true}) {
@@ -288,6 +288,7 @@ std::string site_features_csv(const Structure& structure, const Cavities& caviti
       std::vector<double> row = features(list[i]);
       row.push_back(list[i].ligandability);
       row.push_back(list[i].probability);
+      row.push_back(list[i].rank_score);
       for (double x : row) {
         std::snprintf(text, sizeof text, ",%.17g", x);
         out += text;

@@ -18,8 +18,10 @@ void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking) 
   const SiteFeatures features(structure, cav);
   for (std::vector<Cavity>* list : {&cav.pockets, &cav.voids})
     for (Cavity& c : *list) {
-      c.ligandability = model.margin(features(c));
+      const std::vector<double> f = features(c);
+      c.ligandability = model.margin(f);
       c.probability = model.probability(c.ligandability);
+      c.rank_score = model.rank_score(f);
     }
   // A void that holds a ligand is a site whatever its probability: the
   // model ranks it, the rule keeps it.
@@ -27,7 +29,7 @@ void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking) 
                 [&](const Site& s) { return !s.is_void && !(cav.cavity(s).probability >= kMinSiteProbability); });
   if (ranking == SiteRanking::probability) {
     std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
-      return cav.cavity(a).ligandability > cav.cavity(b).ligandability;
+      return cav.cavity(a).rank_score > cav.cavity(b).rank_score;
     });
     cluster_site_centers(cav);
     std::vector<alpha::Vec3> centers;
