@@ -115,22 +115,19 @@ json ligand_list(const PocketRun& run) {
 // that list), with the score, centre and lining residues repeated for
 // scripts, and the ids of the hetero groups it holds.
 json site_list(const PocketRun& run) {
-  const Cavities& cavities = run.search->cavities;
   json out = json::array();
-  std::size_t rank = 0;
-  for (const Site& s : cavities.sites) {
-    const Cavity& c = cavities.cavity(s);
-    ++rank;
-    out.push_back({{"rank", rank},
-                   {"kind", s.is_void ? "void" : "pocket"},
-                   {"cavity_rank", s.index + 1},
+  for (const SiteEntry& s : site_entries(run)) {
+    const Cavity& c = *s.cavity;
+    out.push_back({{"rank", s.rank},
+                   {"kind", s.kind},
+                   {"cavity_rank", s.cavity_rank},
                    {"score", score(c.score)},
                    {"probability", report_probability(c.probability)},
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(s.center)},
-                   {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
-                   {"lining_residues", lining_residues(run.structure->atoms, residues_of(run.structure->atoms, c.lining_atoms))},
-                   {"ligands", site_ligands(run, rank)}});
+                   {"mean_plddt", s.mean_plddt},
+                   {"lining_residues", lining_residues(run.structure->atoms, s.residues)},
+                   {"ligands", s.ligands}});
   }
   return out;
 }

@@ -98,25 +98,22 @@ json residue_ids(const std::vector<Atom>& atoms, const std::vector<alpha::Index>
 // ligands, and report.json's input, parameters and molecule.
 json page_data(const PocketRun& run) {
   const Structure& st = *run.structure;
-  const Cavities& cavities = run.search->cavities;
   json sites = json::array();
-  std::size_t rank = 0;
-  for (const Site& s : cavities.sites) {
-    const Cavity& c = cavities.cavity(s);
-    ++rank;
-    sites.push_back({{"rank", rank},
-                     {"kind", s.is_void ? "void" : "pocket"},
-                     {"cavity_rank", s.index + 1},
+  for (const SiteEntry& s : site_entries(run)) {
+    const Cavity& c = *s.cavity;
+    sites.push_back({{"rank", s.rank},
+                     {"kind", s.kind},
+                     {"cavity_rank", s.cavity_rank},
                      {"probability", report_probability(c.probability)},
                      {"score", report_number::score(c.score)},
                      {"sa_volume", length(c.sa_volume)},
                      {"ms_volume", length(c.ms_volume)},
                      {"depth", length(c.depth)},
                      {"mouths", c.mouths.size()},
-                     {"mean_plddt", mean_plddt(st, c.lining_atoms)},
+                     {"mean_plddt", s.mean_plddt},
                      {"center", point(s.center)},
-                     {"residues", residue_ids(st.atoms, residues_of(st.atoms, c.lining_atoms))},
-                     {"ligands", site_ligands(run, rank)}});
+                     {"residues", residue_ids(st.atoms, s.residues)},
+                     {"ligands", s.ligands}});
   }
   json tunnels = json::array();
   for (const TunnelEntry& t : tunnel_entries(run))

@@ -42,6 +42,21 @@ std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
 
 }  // namespace
 
+std::vector<SiteEntry> site_entries(const PocketRun& run) {
+  const Structure& st = *run.structure;
+  const Cavities& cavities = run.search->cavities;
+  const std::span<const LigandSite> ligands = ligands_of(run);
+  std::vector<SiteEntry> out;
+  for (const Site& s : cavities.sites) {
+    const Cavity& c = cavities.cavity(s);
+    SiteEntry& e = out.emplace_back(SiteEntry{out.size() + 1, s.is_void ? "void" : "pocket", s.index + 1, &c, s.center,
+                                              mean_plddt(st, c.lining_atoms), residues_of(st.atoms, c.lining_atoms), {}});
+    for (const LigandSite& l : ligands)
+      if (l.lies_in(e.rank)) e.ligands.push_back(ligand_id(st.hetero_groups[l.group]));
+  }
+  return out;
+}
+
 bool TunnelEntry::is_cycle() const { return std::string_view(kind) == "cycle"; }
 
 std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
@@ -95,13 +110,6 @@ std::span<const LigandSite> ligands_of(const PocketRun& run) {
                     std::to_string(run.structure->hetero_groups.size()) + " hetero groups",
                 alpha::ErrorKind::Misuse);
   return ligands;
-}
-
-std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank) {
-  std::vector<std::string> out;
-  for (const LigandSite& l : ligands_of(run))
-    if (l.lies_in(rank)) out.push_back(ligand_id(run.structure->hetero_groups[l.group]));
-  return out;
 }
 
 }  // namespace molecule

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lists every output shows, computed once from a run: the tunnels
-// (report.json, tunnels.csv, tunnel_profiles.csv, report.html), and the
-// values their entries share, rounded as report.json has them
-// (outputs/report_numbers.hpp). The writers only format them.
+// The lists several outputs show, computed once from a run: the sites
+// (report.json, sites.csv and batch's, report.html), the tunnels
+// (report.json, tunnels.csv and batch's, tunnel_profiles.csv,
+// report.html), and the values their entries share, rounded as
+// report.json has them (outputs/report_numbers.hpp). The writers only
+// format them.
 #pragma once
 #include <cstddef>
 #include <span>
@@ -14,6 +16,19 @@
 #include "outputs/pocket_run.hpp"
 
 namespace molecule {
+
+// One site as the outputs list them, in rank order.
+struct SiteEntry {
+  std::size_t rank;         // from 1
+  const char* kind;         // "pocket" or "void"
+  std::size_t cavity_rank;  // its rank among the pockets or the voids
+  const Cavity* cavity;     // the pocket or void
+  alpha::Vec3 center;       // the site's (its cluster's), not always its cavity's
+  nlohmann::ordered_json mean_plddt;  // of the lining residues (mean_plddt)
+  std::vector<alpha::Index> residues;  // of the lining atoms (residues_of)
+  std::vector<std::string> ligands;    // the ids of the hetero groups that lie in it (LigandSite::lies_in)
+};
+std::vector<SiteEntry> site_entries(const PocketRun& run);
 
 // One tunnel as the outputs list them: the cycles first (rank = their
 // tunnel_N in pockets.pml and pockets.pdb), then the tunnels and pores.
@@ -47,9 +62,6 @@ nlohmann::ordered_json mean_plddt(const Structure& structure);
 
 // A hetero group's id, e.g. "A:HEM:201".
 std::string ligand_id(const HeteroGroup& group);
-// The ids of the hetero groups that lie in the site of this rank (from 1),
-// e.g. "A:HEM:201" (LigandSite::lies_in).
-std::vector<std::string> site_ligands(const PocketRun& run, std::size_t rank);
 // The run's ligand sites, one per hetero group (Misuse when a structure
 // with hetero groups has none).
 std::span<const LigandSite> ligands_of(const PocketRun& run);

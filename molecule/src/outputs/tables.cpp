@@ -67,18 +67,15 @@ json table_rows(const PocketRun& run) {
                                 cavities.voids.size(), cavities.sites.size(), cavities.tunnels.size(),
                                 length(cavities.sa_area), length(cavities.sa_volume), mean_plddt(st)});
   json sites = json::array();
-  std::size_t rank = 0;
-  for (const Site& s : cavities.sites) {
-    const Cavity& c = cavities.cavity(s);
+  for (const SiteEntry& s : site_entries(run)) {
+    const Cavity& c = *s.cavity;
     std::string ligands;
-    for (const std::string& id : site_ligands(run, ++rank)) ligands += (ligands.empty() ? "" : " ") + id;
-    // The centre is the site's (its cluster's), not always its cavity's.
+    for (const std::string& id : s.ligands) ligands += (ligands.empty() ? "" : " ") + id;
     sites.push_back(json::array(
-        {rank, s.is_void ? "void" : "pocket", s.index + 1, score(c.score), report_probability(c.probability),
-         length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area), length(c.depth),
-         c.mouths.size(), length(c.mouth_area), score(c.buriedness), c.burial_atoms, length(c.max_probe_radius),
-         length(s.center.x), length(s.center.y), length(s.center.z), mean_plddt(st, c.lining_atoms),
-         residues_of(st.atoms, c.lining_atoms).size(), residue_words(st.atoms, residues_of(st.atoms, c.lining_atoms)),
+        {s.rank, s.kind, s.cavity_rank, score(c.score), report_probability(c.probability), length(c.sa_volume),
+         length(c.ms_volume), length(c.sa_area), length(c.ms_area), length(c.depth), c.mouths.size(),
+         length(c.mouth_area), score(c.buriedness), c.burial_atoms, length(c.max_probe_radius), length(s.center.x),
+         length(s.center.y), length(s.center.z), s.mean_plddt, s.residues.size(), residue_words(st.atoms, s.residues),
          ligands.empty() ? json(nullptr) : json(ligands)}));
   }
   json tunnels = json::array();
