@@ -55,8 +55,8 @@ struct PocketsOptions {
   InputOptions input;  // FILE, --probe and the structure selection
   std::optional<std::string> output_dir;  // -o '' is refused, not the default
   molecule::AnalysisOptions analysis;  // --min-volume, --mesh; .outputs from --outputs
-  // Meshes cost 10-20 times the analysis: written when asked for.
-  std::string outputs = std::string(molecule::kDefaultOutputs) + ",html";  // html when Mol* is installed
+  // The library's default (no meshes: written when asked for), and html when Mol* is installed.
+  std::string outputs = molecule::output_list(molecule::OutputSelection{}) + ",html";
   bool json = false;
   std::string features;  // --features FILE: the cavities' model features as CSV
   std::string surface_points;  // --surface-points FILE: ranking/buried_surface.hpp's points as CSV

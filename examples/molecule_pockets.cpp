@@ -9,8 +9,9 @@
 // the inhibitor carba-NAD (residue CNA) bound. The structure reader drops
 // hetero groups from the atoms the cavities are computed on, but returns
 // them on their own (Structure::hetero_groups), so the ligand's atoms can be
-// compared with the pockets found on the empty protein. With OUTDIR, all the
-// files of `alphapocket pockets` are written there (write_outputs).
+// compared with the pockets found on the empty protein. With OUTDIR, the
+// files of `alphapocket pockets` are written there (write_outputs; the
+// meshes only when options.outputs.meshes).
 // It uses only the installed headers (tests/install/find_package.sh builds
 // it against an installed package).
 #include <algorithm>

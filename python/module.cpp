@@ -85,7 +85,7 @@ py::dict analysis_defaults() {
   d["tunnel_probe"] = a.tunnels.probe;
   d["pores"] = a.tunnels.pores;
   d["mesh"] = a.mesh_format;
-  d["outputs"] = std::string(molecule::kDefaultOutputs);
+  d["outputs"] = molecule::output_list(a.outputs);
   d["ranking"] = a.ranking == molecule::SiteRanking::probability ? "probability" : "geometric";
   d["max_input_mb"] = a.structure.max_input_mib;
   d["threads"] = a.cavities.threads;

@@ -37,9 +37,10 @@ cmake --build "$tmp/sites/build" >/dev/null
 "$tmp/sites/build/sites" "$root/examples/data/1a26A.pdb" "$tmp/out" >"$tmp/stdout"
 grep -qE '^(pocket|void) [0-9]+: probability [01]\.[0-9]+, score ' "$tmp/stdout" || fail "no site line: $(cat "$tmp/stdout")"
 grep -q '^SA area .* A^2, MS volume .* A^3$' "$tmp/stdout" || fail "no surface line"
-# The library's default outputs are all of them (the CLI's --outputs all).
-"$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none --outputs all -o "$tmp/cli" -q >/dev/null
+# The library's default outputs are the CLI's: no meshes unless asked.
+"$build/apps/alphapocket" pockets "$root/examples/data/1a26A.pdb" --tunnels-from none -o "$tmp/cli" -q >/dev/null
 cmp "$tmp/out/report.json" "$tmp/cli/report.json" || fail "report.json differs from the CLI's"
+[[ ! -e $tmp/out/meshes ]] || fail "the library's default outputs include the meshes"
 set +e
 "$tmp/sites/build/sites" "$root/tests/data/bad/three_atoms.pdb" 2>"$tmp/err"
 rc=$?
@@ -86,7 +87,7 @@ if compgen -G "$build/python/alphapocket/_core*.so" >/dev/null; then
 import alphapocket, sys
 if not alphapocket.__file__.startswith('$site'):
     sys.exit('imported from ' + alphapocket.__file__)
-a = alphapocket.analyze('$root/examples/data/1a26A.pdb', tunnels_from='none', outputs='all')
+a = alphapocket.analyze('$root/examples/data/1a26A.pdb', tunnels_from='none')
 if a.to_json() != open('$tmp/cli/report.json').read():
     sys.exit('to_json() differs from report.json')
 ") || fail "the installed Python module does not give report.json"

@@ -46,6 +46,13 @@ namespace {
 const std::string kStructure = std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb";
 
 // One run on examples/data/1a26A.pdb, written once for all tests below.
+// The default outputs and the meshes (not written by default).
+molecule::OutputSelection with_meshes() {
+  molecule::OutputSelection s;
+  s.meshes = true;
+  return s;
+}
+
 struct Run {
   TempDir dir;
   molecule::Structure structure;
@@ -68,7 +75,7 @@ struct Run {
     run.ligands = &ligands;
     run.mesh_format = "ply";
     run.meshes = &meshes;
-    molecule::PocketOutputDir out((dir / "out").string());
+    molecule::PocketOutputDir out((dir / "out").string(), with_meshes());
     written = out.write(run);
     report = json::parse(testing::read_text(dir / "out/report.json"));
   }
@@ -348,7 +355,9 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
 TEST_CASE("pockets outputs: the analysis makes the meshes when its outputs include them, and only then",
           "[pocket_outputs]") {
   const Run& r = the_run();
-  molecule::AnalysisOptions options;  // every output
+  molecule::AnalysisOptions options;
+  CHECK(!options.outputs.meshes);  // not unless asked: they cost 10-20 times the analysis
+  options.outputs.meshes = true;
   const molecule::Analysis a = molecule::analyse(kStructure, options);
   REQUIRE(a.meshes);
   // Of the search's own body, the same as from a search that kept it;
@@ -375,7 +384,7 @@ TEST_CASE("pockets outputs: the analysis makes the meshes when its outputs inclu
   run.meshes = nullptr;
   TempDir dir;
   try {
-    molecule::PocketOutputDir((dir / "out").string()).write(run);
+    molecule::PocketOutputDir((dir / "out").string(), with_meshes()).write(run);
     FAIL("not refused");
   } catch (const alpha::Error& e) {
     CHECK(e.kind() == alpha::ErrorKind::Misuse);
@@ -747,7 +756,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   molecule::PocketRun run = r.run;
   run.mesh_format = "obj";
   run.paths = nullptr;  // no tunnel files this time
-  const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string()).write(run);
+  const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string(), with_meshes()).write(run);
   CHECK(std::count(written.begin(), written.end(), "meshes/surface.obj") == 1);
   CHECK(std::count(written.begin(), written.end(), "meshes/surface.mtl") == 1);
   CHECK(std::count(written.begin(), written.end(), "tunnels.csv") == 0);
@@ -768,7 +777,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   CHECK_THROWS_WITH(molecule::PocketOutputDir((dir / "out").string()),
                     Catch::Contains("holds files that are not alphapocket outputs ('meshes/notes.txt')"));
   fs::remove(dir / "out/meshes/notes.txt");
-  molecule::PocketOutputDir out((dir / "out").string());
+  molecule::PocketOutputDir out((dir / "out").string(), with_meshes());
   fs::create_directory(dir / "out/report.json.d");
   CHECK_THROWS_WITH(out.write(run), Catch::Contains("('report.json.d')"));
   CHECK(testing::read_text(dir / "out/meshes/surface.obj") != "old");
@@ -778,7 +787,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
 TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was", "[pocket_outputs]") {
   const Run& r = the_run();
   TempDir dir;
-  molecule::PocketOutputDir out((dir / "out").string());
+  molecule::PocketOutputDir out((dir / "out").string(), with_meshes());
   out.write(r.run);
   // A directory where a file of ours goes appears while the run works.
   fs::remove(dir / "out/meshes/surface.ply");

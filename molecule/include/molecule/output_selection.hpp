@@ -5,19 +5,18 @@
 
 namespace molecule {
 
+// The defaults are what `alphapocket pockets` and Python's analyze() write
+// unless told (output_list(OutputSelection{})): everything but the meshes,
+// which cost 10-20 times the analysis, and report.html.
 struct OutputSelection {
-  bool report = true, csv = true, pdb = true, meshes = true;
+  bool report = true, csv = true, pdb = true;
+  bool meshes = false;  // the surface and casts (Analysis::meshes), in AnalysisOptions::mesh_format
   bool pml = true;  // the viewer scripts: pockets.pml, pockets.cxc and structure.cif
   bool tunnels = true;  // tunnels.csv, tunnel_profiles.csv, tunnels.pdb
   // report.html, scene.mvsj, structure.cif and viewer/ (report_page.hpp):
   // off unless asked, as it needs the viewer files (report_assets.hpp).
   bool html = false;
 };
-
-// What `alphapocket pockets` and Python's analyze() write unless told:
-// everything but the meshes, which cost 10-20 times the analysis (a
-// default OutputSelection, as the library's write_outputs takes, is all).
-inline constexpr const char* kDefaultOutputs = "report,csv,pml,pdb,tunnels";
 
 // "report,csv,pml,pdb,meshes,tunnels,html" (any subset, any order; "all" for
 // every one) -> a selection; throws alpha::Error naming an unknown item.
