@@ -115,3 +115,24 @@ TEST_CASE("site recentering: each site at the mean of the buried points near its
   molecule::center_sites_on_buried_surface(far, surface);
   CHECK(far.sites[0].center.x == 1000);
 }
+
+TEST_CASE("site recentering: without placed centres the sites keep their order and their cavities' centres",
+          "[site_recentering]") {
+  const molecule::Structure s = molecule::read_structure(std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb");
+  const molecule::PocketSearch placed = molecule::search_pockets(s, {});
+  molecule::CavityOptions options;
+  options.site_centers = false;
+  const molecule::PocketSearch unplaced = molecule::search_pockets(s, options);
+  const molecule::Cavities &a = placed.cavities, &b = unplaced.cavities;
+  REQUIRE(b.sites.size() == a.sites.size());
+  REQUIRE(a.sites.size() >= 3);
+  std::size_t moved = 0;
+  for (std::size_t k = 0; k < a.sites.size(); ++k) {
+    CHECK(b.sites[k].is_void == a.sites[k].is_void);
+    CHECK(b.sites[k].index == a.sites[k].index);
+    CHECK(b.cavity(b.sites[k]).probability == a.cavity(a.sites[k]).probability);
+    CHECK(b.sites[k].center == b.cavity(b.sites[k]).center);
+    moved += norm(a.sites[k].center - b.sites[k].center) > 1e-6;
+  }
+  CHECK(moved >= 3);  // the placed centres are elsewhere
+}

@@ -232,6 +232,9 @@ struct CavityOptions {
   // same, bit for bit, for any number.
   unsigned threads = 1;
   bool tunnels = true;  // Cavities::tunnels found (from the complex's persistence pairs)
+  // Site::center placed by the ranking (search_pockets: clusters moved onto
+  // the buried surface); off, each site's centre is its cavity's.
+  bool site_centers = true;
 };
 
 // The two bodies find_cavities measures the cavities with: the

@@ -33,7 +33,9 @@ inline constexpr double kMinSiteProbability = 0.08;
 // below kMinSiteProbability are left out (a void that holds a ligand is a
 // site whatever its probability) and the sites ordered as
 // `ranking` says (by the model: with their clusters' centres,
-// site_clusters.hpp, moved onto the buried surface, site_recentering.hpp).
-void rank_sites(const Structure& structure, Cavities& cavities, SiteRanking ranking = SiteRanking::probability);
+// site_clusters.hpp, moved onto the buried surface, site_recentering.hpp,
+// unless `place_centers` is false).
+void rank_sites(const Structure& structure, Cavities& cavities, SiteRanking ranking = SiteRanking::probability,
+                bool place_centers = true);
 
 }  // namespace molecule

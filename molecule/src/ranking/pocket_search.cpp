@@ -31,7 +31,7 @@ PocketSearch search_pockets(const Structure& structure, const CavityOptions& opt
   out.cavities = find_cavities(out.shape->complex(), radii, options, keep_bodies ? &out.bodies : nullptr);
   out.cavities_seconds = seconds_since(cavities_start);
   const auto ranking_start = std::chrono::steady_clock::now();
-  rank_sites(structure, out.cavities, ranking);
+  rank_sites(structure, out.cavities, ranking, options.site_centers);
   out.ranking_seconds = seconds_since(ranking_start);
   return out;
 }

@@ -13,7 +13,7 @@
 
 namespace molecule {
 
-void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking) {
+void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking, bool place_centers) {
   const LigandabilityModel& model = default_ligandability_model();
   const SiteFeatures features(structure, cav);
   for (std::vector<Cavity>* list : {&cav.pockets, &cav.voids})
@@ -31,6 +31,7 @@ void rank_sites(const Structure& structure, Cavities& cav, SiteRanking ranking) 
     std::stable_sort(cav.sites.begin(), cav.sites.end(), [&](const Site& a, const Site& b) {
       return cav.cavity(a).rank_score > cav.cavity(b).rank_score;
     });
+    if (!place_centers) return;
     cluster_site_centers(cav);
     std::vector<alpha::Vec3> centers;
     for (const Site& s : cav.sites) centers.push_back(s.center);

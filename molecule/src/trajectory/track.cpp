@@ -30,6 +30,7 @@ TrackResult track(FrameSource& frames, const TrackOptions& options, const std::f
   AnalysisOptions analysis = options.analysis;
   analysis.report = false;
   analysis.cavities.tunnels = false;  // Cavities::tunnels are the report's: track follows the tunnel paths
+  analysis.cavities.site_centers = false;  // the report's too: track starts tunnels from the sites' cells
   analysis.outputs.meshes = false;  // no frame's meshes are made: the search keeps no solvent bodies
   const unsigned jobs = std::max(1u, options.jobs);
   if (jobs > 1) analysis.cavities.threads = 1;  // the frames are the threads' work
