@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lists several outputs show, computed once from a run: the sites
-// (report.json, sites.csv and batch's, report.html), the tunnels
-// (report.json, tunnels.csv and batch's, tunnel_profiles.csv,
+// The lists several outputs show, made from a run by one function each:
+// the sites (report.json, sites.csv and batch's, report.html), the
+// tunnels (report.json, tunnels.csv and batch's, tunnel_profiles.csv,
 // report.html), and the values their entries share, rounded as
 // report.json has them (outputs/report_numbers.hpp). The writers only
-// format them.
+// format them; each writer makes the list it shows (a run does not keep
+// them).
 #pragma once
 #include <cstddef>
 #include <span>

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "outputs/tables.hpp"
 
-
 #include "molecule/residues.hpp"
 #include "outputs/report_numbers.hpp"
 #include "outputs/result_entries.hpp"
