@@ -220,7 +220,7 @@ private:
       molecule::write_outputs(analysis, out);
       for (const std::string& warning : out.warnings()) progress_.warn(in.id + ": " + warning);
       r.status = "ok";
-      r.rows = molecule::table_rows(analysis.run());
+      r.rows = molecule::table_rows(analysis);
     } catch (const molecule::AnalysisError& e) {
       failed(e.skipped() ? "skipped" : "failed", e.kind(), e.what());
     } catch (const std::bad_alloc&) {

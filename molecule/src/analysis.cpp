@@ -12,26 +12,6 @@
 
 namespace molecule {
 
-PocketRun Analysis::run() const {
-  PocketRun r;
-  r.file = file;
-  r.structure = &structure;
-  r.options = options.cavities;
-  r.version = options.version;
-  r.search = &search;
-  r.ligands = &ligands;
-  r.mesh_format = meshes ? options.mesh_format : "";
-  r.meshes = meshes ? &*meshes : nullptr;
-  r.min_plddt = options.structure.min_plddt;
-  if (!options.radii_file.empty()) r.radii = options.radii_file;
-  r.paths = &paths;
-  r.cycle_paths = &cycle_paths;
-  r.tunnel_starts = tunnel_starts;
-  r.tunnels_from = options.tunnels_from;
-  r.tunnel_options = options.tunnels;
-  return r;
-}
-
 namespace {
 
 template <class Read>
@@ -80,7 +60,7 @@ Analysis analysed(const std::string& file, const AnalysisOptions& options, Read&
     a.paths = std::move(network.paths);
     a.cycle_paths = std::move(network.cycles);
     a.tunnels_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.report) a.report = std::make_shared<const Report>(Report{pocket_report(a.run())});
+    if (options.report) a.report = std::make_shared<const Report>(Report{pocket_report(a)});
   } catch (const AnalysisError&) {
     throw;
   } catch (const StructureError& e) {
@@ -112,7 +92,7 @@ Analysis analyse_structure(const std::string& name, Structure structure, const A
 std::string report_text(const Analysis& analysis) { return report_file_text(analysis.report->json); }
 
 std::vector<std::string> write_outputs(const Analysis& analysis, PocketOutputDir& out) {
-  return out.write(analysis.run(), analysis.report->json);
+  return out.write(analysis, analysis.report->json);
 }
 
 std::vector<std::string> write_outputs(const Analysis& analysis, const std::string& dir,

@@ -187,7 +187,7 @@ TEST_CASE("batch records: a line reads back the same; table_rows follows the rep
   r.key = molecule::batch_key({{"probe", 1.4}}, "test");
   r.status = "ok";
   r.seconds = 0.25;
-  r.rows = molecule::table_rows(a.run());
+  r.rows = molecule::table_rows(a);
   const std::string line = molecule::record_line(r);
   CHECK(line.find('\n') == std::string::npos);
   const molecule::BatchRecord back = molecule::parse_record(line);
@@ -223,7 +223,7 @@ TEST_CASE("table rows: every value is report.json's", "[batch]") {
     INFO(file);
     const molecule::Analysis a = molecule::analyse(file, options);
     const json& report = a.report->json;
-    const json rows = molecule::table_rows(a.run());
+    const json rows = molecule::table_rows(a);
     const json& input = report.at("input");
     const json& m = report.at("molecule");
     CHECK(rows.at("structure") == json::array({input.at("format"), int(input.at("predicted") == true), m.at("atoms"),

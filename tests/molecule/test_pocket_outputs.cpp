@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -45,7 +46,6 @@ namespace {
 
 const std::string kStructure = std::string(ALPHAPOCKET_EXAMPLES_DATA) + "/1a26A.pdb";
 
-// One run on examples/data/1a26A.pdb, written once for all tests below.
 // The default outputs and the meshes (not written by default).
 molecule::OutputSelection with_meshes() {
   molecule::OutputSelection s;
@@ -53,28 +53,20 @@ molecule::OutputSelection with_meshes() {
   return s;
 }
 
+// One run on examples/data/1a26A.pdb, written once for all tests below.
 struct Run {
   TempDir dir;
-  molecule::Structure structure;
-  molecule::PocketSearch search;
-  molecule::PocketMeshes meshes;
-  std::vector<molecule::LigandSite> ligands;
   molecule::PocketRun run;
   std::vector<std::string> written;
   json report;
 
-  Run()
-      : structure(molecule::read_structure(kStructure)),
-        search(molecule::search_pockets(structure, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true)),
-        meshes(molecule::pocket_meshes(search, molecule::kDefaultMeshResolution)),
-        ligands(molecule::ligand_sites(structure, search)) {
+  Run() {
     run.file = kStructure;
-    run.structure = &structure;
-    run.version = "test";
-    run.search = &search;
-    run.ligands = &ligands;
-    run.mesh_format = "ply";
-    run.meshes = &meshes;
+    run.options.version = "test";
+    run.structure = molecule::read_structure(kStructure);
+    run.search = molecule::search_pockets(run.structure, {}, molecule::SiteRanking::probability, /*keep_bodies=*/true);
+    run.meshes = molecule::pocket_meshes(run.search, molecule::kDefaultMeshResolution);
+    run.ligands = molecule::ligand_sites(run.structure, run.search);
     molecule::PocketOutputDir out((dir / "out").string(), with_meshes());
     written = out.write(run);
     report = json::parse(testing::read_text(dir / "out/report.json"));
@@ -82,10 +74,19 @@ struct Run {
   fs::path file(const std::string& name) const { return dir / ("out/" + name); }
 };
 
-const Run& the_run() {
-  static const Run run;
+Run& the_run() {
+  static Run run;
   return run;
 }
+
+// A field of the shared run changed until the end of the scope.
+template <class T>
+struct Changed {
+  T& field;
+  T old;
+  Changed(T& f, T value) : field(f), old(std::exchange(f, std::move(value))) {}
+  ~Changed() { field = std::move(old); }
+};
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -201,7 +202,7 @@ void check_cavities(const json& list, const std::vector<molecule::Cavity>& cavit
 TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]") {
   const Run& r = the_run();
   const json& j = r.report;
-  const molecule::Cavities& cav = r.search.cavities;
+  const molecule::Cavities& cav = r.run.search.cavities;
   REQUIRE(j.is_object());
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
@@ -213,7 +214,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   CHECK(in["file"] == kStructure);
   CHECK(in["format"] == "PDB");
   CHECK(in["model"] == 1);
-  CHECK(in["atoms_kept"] == r.structure.atoms.size());
+  CHECK(in["atoms_kept"] == r.run.structure.atoms.size());
   std::size_t dropped = 0;
   for (const char* why : {"chain", "altloc", "water", "hetero", "hydrogen"}) dropped += in["atoms_dropped"][why].get<std::size_t>();
   CHECK(in["atoms_kept"].get<std::size_t>() + dropped == in["atoms_in_model"].get<std::size_t>());
@@ -230,7 +231,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   CHECK(par["alpha_sq"] == 0.0);
 
   const json& mol = j["molecule"];
-  CHECK(mol["atoms"] == r.structure.atoms.size());
+  CHECK(mol["atoms"] == r.run.structure.atoms.size());
   CHECK(mol["sa_area"].get<double>() > 0);
   CHECK(mol["sa_volume"].get<double>() > 0);
   CHECK(mol["pockets"] == cav.pockets.size());
@@ -240,8 +241,8 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
   CHECK(mol["mesh"] == "meshes/surface.ply");
 
   REQUIRE_FALSE(cav.pockets.empty());  // 1A26 has its ligand's pocket, at least
-  check_cavities(j["pockets"], cav.pockets, "pocket", r.structure);
-  check_cavities(j["voids"], cav.voids, "void", r.structure);
+  check_cavities(j["pockets"], cav.pockets, "pocket", r.run.structure);
+  check_cavities(j["voids"], cav.voids, "void", r.run.structure);
 
   // Each site names its cavity, whose score it repeats, and gives its
   // (cluster's) centre.
@@ -283,7 +284,7 @@ TEST_CASE("pockets outputs: report.json follows its schema", "[pocket_outputs]")
 TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.json", "[pocket_outputs]") {
   const Run& r = the_run();
   const std::vector<std::string> lines = lines_of(testing::read_text(r.file("pockets.csv")));
-  REQUIRE(lines.size() == 1 + r.search.cavities.pockets.size());
+  REQUIRE(lines.size() == 1 + r.run.search.cavities.pockets.size());
   CHECK(lines[0] ==
         "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,"
         "center_z,lining_residues,residues,mean_plddt");
@@ -296,7 +297,7 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
     CHECK(std::stoul(f[0]) == i);
     CHECK(std::stod(f[1]) == p["score"].get<double>());
     CHECK(std::stod(f[2]) == p["probability"].get<double>());
-    CHECK(std::stod(f[2]) == Approx(r.search.cavities.pockets[i - 1].probability).margin(5e-5));
+    CHECK(std::stod(f[2]) == Approx(r.run.search.cavities.pockets[i - 1].probability).margin(5e-5));
     CHECK(std::stod(f[3]) == p["sa_volume"].get<double>());  // the same text
     CHECK(std::stod(f[4]) == p["ms_volume"].get<double>());
     CHECK(std::stod(f[6]) == p["ms_area"].get<double>());
@@ -315,8 +316,8 @@ TEST_CASE("pockets outputs: pockets.csv has one row per pocket, as in report.jso
 TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of the reported volumes, coloured by site",
           "[pocket_outputs]") {
   const Run& r = the_run();
-  const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
-  const molecule::CavityRanks ranks = molecule::cavity_ranks(r.search.cavities);
+  const molecule::CavityColors colors = molecule::cavity_colors(r.run.search.cavities);
+  const molecule::CavityRanks ranks = molecule::cavity_ranks(r.run.search.cavities);
   auto check_list = [&](const std::vector<molecule::Cavity>& list, const std::vector<molecule::Rgb>& color,
                         const std::vector<std::size_t>& rank, const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -334,8 +335,8 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
       CHECK(std::count(sites.begin(), sites.end(), int(rank.at(i))) == long(sites.size()));
     }
   };
-  check_list(r.search.cavities.pockets, colors.pockets, ranks.pockets, "pocket");
-  check_list(r.search.cavities.voids, colors.voids, ranks.voids, "void");
+  check_list(r.run.search.cavities.pockets, colors.pockets, ranks.pockets, "pocket");
+  check_list(r.run.search.cavities.voids, colors.voids, ranks.voids, "void");
 
   const ReadMesh surface = testing::read_back(r.file("meshes/surface.ply"), true);
   CHECK(testing::closed_and_consistent(surface));
@@ -344,7 +345,7 @@ TEST_CASE("pockets outputs: the surface and the casts are closed manifolds of th
   // Every site is painted on it, with its rank as the vertices' site.
   const auto sites = testing::vertex_sites(r.file("meshes/surface.ply"));
   REQUIRE(sites.size() == surface.n_vertices());
-  for (std::size_t k = 1; k <= r.search.cavities.sites.size(); ++k) {
+  for (std::size_t k = 1; k <= r.run.search.cavities.sites.size(); ++k) {
     INFO("site " << k);
     CHECK(std::count(sites.begin(), sites.end(), int(k)) > 0);
     CHECK(count_colors(surface, molecule::rank_color(k)).first > 0);
@@ -362,34 +363,19 @@ TEST_CASE("pockets outputs: the analysis makes the meshes when its outputs inclu
   REQUIRE(a.meshes);
   // Of the search's own body, the same as from a search that kept it;
   // the body is freed once meshed.
-  CHECK(a.meshes->surface.points == r.meshes.surface.points);
-  CHECK(a.meshes->surface.face_colors == r.meshes.surface.face_colors);
+  CHECK(a.meshes->surface.points == r.run.meshes->surface.points);
+  CHECK(a.meshes->surface.face_colors == r.run.meshes->surface.face_colors);
   CHECK(a.meshes->pockets.size() == a.search.cavities.pockets.size());
   CHECK(a.meshes->voids.size() == a.search.cavities.voids.size());
   CHECK(!a.search.bodies.accessible);
   CHECK(!a.search.bodies.excluded);
-  CHECK(a.run().meshes == &*a.meshes);
-  CHECK(a.run().mesh_format == "ply");
+  CHECK(a.mesh_format() == "ply");
 
   options.outputs.meshes = false;
   const molecule::Analysis b = molecule::analyse(kStructure, options);
   CHECK(!b.meshes);
   CHECK(!b.search.bodies.excluded);
-  CHECK(b.run().meshes == nullptr);
-  CHECK(b.run().mesh_format.empty());
-
-  // A run that names a mesh format but has no meshes is a caller's bug,
-  // refused before anything is written.
-  molecule::PocketRun run = r.run;
-  run.meshes = nullptr;
-  TempDir dir;
-  try {
-    molecule::PocketOutputDir((dir / "out").string(), with_meshes()).write(run);
-    FAIL("not refused");
-  } catch (const alpha::Error& e) {
-    CHECK(e.kind() == alpha::ErrorKind::Misuse);
-  }
-  CHECK(dir.files().empty());
+  CHECK(b.mesh_format().empty());
 }
 
 TEST_CASE("pockets outputs: cavity colours follow the site ranking, then the other pockets and voids", "[pocket_outputs]") {
@@ -472,8 +458,8 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
     REQUIRE(std::sscanf(line.c_str() + line.find("pos=["), "pos=[%lf, %lf, %lf]", &x, &y, &z) == 3);
     if (name.find("_space") == std::string::npos) centers[name] = {x, y, z};
   }
-  const std::vector<molecule::Atom>& atoms = r.structure.atoms;
-  const molecule::CavityColors colors = molecule::cavity_colors(r.search.cavities);
+  const std::vector<molecule::Atom>& atoms = r.run.structure.atoms;
+  const molecule::CavityColors colors = molecule::cavity_colors(r.run.search.cavities);
   const auto check = [&](const json& list, const std::vector<molecule::Rgb>& color, const std::string& kind) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string name = kind + "_" + std::to_string(i + 1);
@@ -497,7 +483,7 @@ TEST_CASE("pockets outputs: pockets.pml selects the lining atoms and marks the c
   check(r.report["voids"], colors.voids, "void");
   // The ligand (CNA, left out of the search) is in the copy and selected.
   REQUIRE(selected.count("ligands") == 1);
-  CHECK(selected.at("ligands").size() == r.structure.hetero_groups.at(0).atoms.size());
+  CHECK(selected.at("ligands").size() == r.run.structure.hetero_groups.at(0).atoms.size());
   CHECK(*selected.at("ligands").begin() == atoms.size() + 1);
   // Tunnels: the bottleneck's atoms, and a sphere of the bottleneck radius
   // at its centre.
@@ -526,8 +512,8 @@ TEST_CASE("pockets outputs: structure.cif reads back as the atoms searched, then
   all.keep_hetero = true;
   const molecule::Structure copy = molecule::read_structure(r.file("structure.cif").string(), all);
   CHECK(copy.report.format == "mmCIF");
-  const std::vector<molecule::Atom>& atoms = r.structure.atoms;
-  const std::vector<molecule::Atom>& ligand = r.structure.hetero_groups.at(0).atoms;
+  const std::vector<molecule::Atom>& atoms = r.run.structure.atoms;
+  const std::vector<molecule::Atom>& ligand = r.run.structure.hetero_groups.at(0).atoms;
   REQUIRE(copy.atoms.size() == atoms.size() + ligand.size());
   for (std::size_t i = 0; i < copy.atoms.size(); ++i) {
     const molecule::Atom& a = copy.atoms[i];
@@ -550,9 +536,9 @@ TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavi
     CHECK(line.substr(17, 3) == "STP");
     centers += line.substr(12, 4) == " CEN" || line.substr(12, 4) == " BTN";
   }
-  const std::vector<molecule::Tunnel>& tunnels = r.search.cavities.tunnels;
+  const std::vector<molecule::Tunnel>& tunnels = r.run.search.cavities.tunnels;
   REQUIRE(!tunnels.empty());
-  CHECK(centers == r.search.cavities.pockets.size() + r.search.cavities.voids.size() + tunnels.size());
+  CHECK(centers == r.run.search.cavities.pockets.size() + r.run.search.cavities.voids.size() + tunnels.size());
 
   molecule::StructureOptions keep;
   keep.keep_hetero = true;
@@ -573,7 +559,7 @@ TEST_CASE("pockets outputs: pockets.pdb reads back with one STP residue per cavi
       continue;
     }
     const molecule::Cavity& c =
-        (g.chain == "P" ? r.search.cavities.pockets : r.search.cavities.voids)[std::size_t(g.seq_num) - 1];
+        (g.chain == "P" ? r.run.search.cavities.pockets : r.run.search.cavities.voids)[std::size_t(g.seq_num) - 1];
     REQUIRE(g.atoms.front().name == "CEN");
     CHECK(g.atoms.front().position.x == Approx(c.center.x).margin(1e-3));
     CHECK(g.atoms.front().position.z == Approx(c.center.z).margin(1e-3));
@@ -608,8 +594,8 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
   c.mouths.resize(1);
   search.cavities.pockets = {c};
   molecule::PocketRun run;
-  run.structure = &s;
-  run.search = &search;
+  run.structure = s;
+  run.search = std::move(search);
   const std::vector<std::string> lines = lines_of(molecule::pockets_csv(run));
   REQUIRE(lines.size() == 2);
   CHECK(lines[1].substr(lines[1].rfind(",3,")) == ",3,\"A:TYR:42 A:GLY:42B x,y:SER:-3\",");
@@ -625,21 +611,21 @@ TEST_CASE("pockets outputs: residues with insertion codes, CSV quoting", "[pocke
 
 TEST_CASE("pockets outputs: the ligands' sites are the run's, one per hetero group", "[pocket_outputs]") {
   const Run& r = the_run();
-  REQUIRE(r.structure.hetero_groups.size() == r.ligands.size());
-  REQUIRE(!r.ligands.empty());
+  REQUIRE(r.run.structure.hetero_groups.size() == r.run.ligands.size());
+  REQUIRE(!r.run.ligands.empty());
   // Hand-made sites for each group: report.json writes what it is given.
-  std::vector<molecule::LigandSite> ligands = r.ligands;
+  std::vector<molecule::LigandSite> ligands = r.run.ligands;
   for (molecule::LigandSite& l : ligands) {
     l.site = l.nearest_site = 2;
     l.distance = 1.23456;
     l.atoms_in_site = 1;
     l.holding = {{1, 3}, {2, 1}};
   }
-  molecule::PocketRun run = r.run;
-  run.ligands = &ligands;
+  Changed<std::vector<molecule::LigandSite>> given(the_run().run.ligands, ligands);
+  const molecule::PocketRun& run = r.run;
   const json report = molecule::pocket_report(run);
   REQUIRE(report["ligands"].size() == ligands.size());
-  const molecule::HeteroGroup& g = r.structure.hetero_groups[0];
+  const molecule::HeteroGroup& g = r.run.structure.hetero_groups[0];
   CHECK(report["ligands"][0]["site"] == 2);
   CHECK(report["ligands"][0]["atoms_in_site"] == 1);
   CHECK(report["ligands"][0]["in_sites"][0]["atoms"] == 3);
@@ -657,10 +643,10 @@ TEST_CASE("pockets outputs: the ligands' sites are the run's, one per hetero gro
     }
     return alpha::ErrorKind::Internal;  // not thrown
   };
-  run.ligands = nullptr;
+  the_run().run.ligands.clear();
   CHECK(kind() == alpha::ErrorKind::Misuse);
   ligands.pop_back();
-  run.ligands = &ligands;
+  the_run().run.ligands = ligands;
   CHECK(kind() == alpha::ErrorKind::Misuse);
 }
 
@@ -753,10 +739,11 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   for (const char* name : {"pocket_999.ply", "void_1.stl", "molecule.ply", "surface.obj"})
     std::ofstream(dir / ("out/meshes/" + std::string(name))) << "old";
   std::ofstream(dir / "out/tunnels.csv") << "old";
-  molecule::PocketRun run = r.run;
-  run.mesh_format = "obj";
-  run.paths = nullptr;  // no tunnel files this time
-  const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string(), with_meshes()).write(run);
+  const Changed<std::string> obj(the_run().run.options.mesh_format, "obj");
+  const molecule::PocketRun& run = r.run;
+  molecule::OutputSelection selection = with_meshes();
+  selection.tunnels = false;  // no tunnel files this time
+  const std::vector<std::string> written = molecule::PocketOutputDir((dir / "out").string(), selection).write(run);
   CHECK(std::count(written.begin(), written.end(), "meshes/surface.obj") == 1);
   CHECK(std::count(written.begin(), written.end(), "meshes/surface.mtl") == 1);
   CHECK(std::count(written.begin(), written.end(), "tunnels.csv") == 0);
@@ -777,7 +764,7 @@ TEST_CASE("pockets outputs: an earlier run is replaced whole, other files are re
   CHECK_THROWS_WITH(molecule::PocketOutputDir((dir / "out").string()),
                     Catch::Contains("holds files that are not alphapocket outputs ('meshes/notes.txt')"));
   fs::remove(dir / "out/meshes/notes.txt");
-  molecule::PocketOutputDir out((dir / "out").string(), with_meshes());
+  molecule::PocketOutputDir out((dir / "out").string(), selection);
   fs::create_directory(dir / "out/report.json.d");
   CHECK_THROWS_WITH(out.write(run), Catch::Contains("('report.json.d')"));
   CHECK(testing::read_text(dir / "out/meshes/surface.obj") != "old");
@@ -795,9 +782,8 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
   std::map<std::string, std::string> before;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) before[e.path().string()] = testing::read_text(e.path());
-  molecule::PocketRun other = r.run;
-  other.version = "other";
-  CHECK_THROWS_WITH(out.write(other), Catch::Contains("meshes/surface.ply"));
+  const Changed<std::string> other(the_run().run.options.version, "other");
+  CHECK_THROWS_WITH(out.write(r.run), Catch::Contains("meshes/surface.ply"));
   std::map<std::string, std::string> after;
   for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
     if (e.is_regular_file()) after[e.path().string()] = testing::read_text(e.path());
@@ -808,16 +794,14 @@ TEST_CASE("pockets outputs: a write that fails leaves the earlier run as it was"
 TEST_CASE("pockets outputs: pockets.pdb leaves out what the PDB columns cannot hold", "[pocket_outputs]") {
   const Run& r = the_run();
   // The same molecule 20000 A away: every centre is beyond the columns.
-  molecule::Structure far = r.structure;
+  molecule::Structure far = r.run.structure;
   for (molecule::Atom& a : far.atoms) a.position.x += 20000;
-  const molecule::PocketSearch search = molecule::search_pockets(far, {});
-  const std::vector<molecule::LigandSite> ligands = molecule::ligand_sites(far, search);
-  molecule::PocketRun run = r.run;
-  run.mesh_format.clear();  // the meshes are near's
-  run.meshes = nullptr;
-  run.structure = &far;
-  run.search = &search;
-  run.ligands = &ligands;
+  molecule::PocketRun run;
+  run.file = kStructure;
+  run.structure = far;
+  run.search = molecule::search_pockets(far, {});
+  run.ligands = molecule::ligand_sites(far, run.search);
+  const molecule::PocketSearch& search = run.search;
   TempDir dir;
   molecule::PocketOutputDir out((dir / "out").string());
   out.write(run);

@@ -17,18 +17,10 @@
 #include <vector>
 
 #include "alpha/error.hpp"
-#include "alphapocket/version.hpp"
-#include "molecule/cavities.hpp"
-#include "molecule/ligand_sites.hpp"
-#include "molecule/output_selection.hpp"
-#include "molecule/pocket_meshes.hpp"
-#include "molecule/pocket_search.hpp"
-#include "molecule/structure.hpp"
-#include "molecule/tunnel_paths.hpp"
+#include "molecule/pocket_run.hpp"
 
 namespace molecule {
 
-struct PocketRun;       // outputs/pocket_run.hpp
 struct Report;          // pocket_report.hpp: report.json as JSON
 class PocketOutputDir;  // pocket_outputs.hpp
 
@@ -48,43 +40,13 @@ private:
   bool skipped_;
 };
 
-struct AnalysisOptions {
-  StructureOptions structure;
-  CavityOptions cavities;
-  std::string version = alphapocket::kVersion;  // written into the report
-  // More atoms after the selection: LimitExceeded before the search. 0: no limit.
-  std::size_t max_atoms = 0;
-  OutputSelection outputs;
-  std::string mesh_format = "ply";  // "ply", "obj", "off", "stl"
-  std::string radii_file;           // --radii (molecule/radius_file.hpp); empty: ProtOr
-  std::string tunnels_from = "auto";  // --tunnels-from (molecule/tunnel_start.hpp)
-  TunnelOptions tunnels;            // --tunnel-probe, --pores
-  SiteRanking ranking = SiteRanking::probability;
-  double mesh_resolution = kDefaultMeshResolution;  // triangle size of the surface mesh, A (Analysis::meshes)
-  bool report = true;  // Analysis::report made, and ligands (read by it and the writers only)
-};
-
-// Everything one structure produced; owns all of it.
-struct Analysis {
-  std::string file;  // as given
-  AnalysisOptions options;
-  Structure structure;
-  PocketSearch search;
-  std::vector<LigandSite> ligands;  // where each hetero group lies (ligand_sites), by Structure::hetero_groups
-  std::vector<std::string> tunnel_starts;  // labels of the starts
-  std::vector<TunnelPath> paths;           // tunnels and pores (find_tunnels)
-  std::vector<TunnelPath> cycle_paths;     // the way through each of search.cavities.tunnels (find_tunnels)
-  // The surface and casts (pocket_meshes) when options.outputs.meshes, made
-  // of the search's solvent-excluded body, which is then freed
-  // (search.bodies is empty); none otherwise.
-  std::optional<PocketMeshes> meshes;
+// Everything one structure produced, owned: the run (the options, the
+// structure, the search, the ligands' sites, the tunnels, the meshes:
+// molecule/pocket_run.hpp), which the writers take as it is, and how it went.
+struct Analysis : PocketRun {
   double tunnels_seconds = 0;
   std::size_t radius_fallbacks = 0;  // atoms no rule of the radius file matched
-  std::shared_ptr<const Report> report;  // pocket_report(run()) if options.report; report_text() is its file
-
-  // The writers' view of it (outputs/pocket_run.hpp; borrows from *this: keep
-  // *this alive and in place).
-  PocketRun run() const;
+  std::shared_ptr<const Report> report;  // pocket_report(*this) if options.report; report_text() is its file
 };
 
 // Reads `file` and searches its cavities; throws AnalysisError naming the file.

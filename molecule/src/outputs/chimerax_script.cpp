@@ -39,7 +39,7 @@ std::string marker(const std::string& model, const SinkSphere& sphere, Rgb color
 
 std::string header(const PocketRun& run, const ViewerScene& scene) {
   // No ';' in a comment: ChimeraX separates commands there.
-  std::string s = "# alphapocket " + printable_ascii(run.version, ";") + ": pockets of " +
+  std::string s = "# alphapocket " + printable_ascii(run.options.version, ";") + ": pockets of " +
                   printable_ascii(run.file, ";") + "\n";
   s += "# Open with `chimerax pockets.cxc` or `open pockets.cxc` in ChimeraX. Model #1 is structure.cif\n";
   s += "# (" + scene.object + ": the atoms searched and the ligands). Coloured by site rank (report.json sites).\n";

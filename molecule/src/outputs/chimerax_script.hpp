@@ -20,7 +20,7 @@
 #pragma once
 #include <string>
 
-#include "outputs/pocket_run.hpp"
+#include "molecule/pocket_run.hpp"
 #include "outputs/viewer_scene.hpp"
 
 namespace molecule {

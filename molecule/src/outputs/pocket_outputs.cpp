@@ -167,7 +167,7 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
   std::optional<StructureCopy> copy;
   std::optional<ViewerScene> scene;
   if (selection_.pml || selection_.html) {
-    copy = structure_copy(*run.structure, "alphapocket " + run.version + ": the atoms searched in " + run.file +
+    copy = structure_copy(run.structure, "alphapocket " + run.options.version + ": the atoms searched in " + run.file +
                                               ", and its ligands");
     scene = viewer_scene(run, copy->ligand_ids);
     files.emplace_back("structure.cif", copy->cif);
@@ -176,30 +176,28 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
     files.emplace_back("pockets.pml", pymol_script(run, *scene));
     files.emplace_back("pockets.cxc", chimerax_script(run, *scene));
   }
-  const alpha::AlphaComplex& ac = run.search->shape->complex();
-  const Cavities& cavities = run.search->cavities;
+  const alpha::AlphaComplex& ac = run.search.shape->complex();
+  const Cavities& cavities = run.search.cavities;
   if (selection_.pdb) {
-    PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.version + " pockets of " + run.file);
+    PocketPdb pdb = pocket_pdb(ac, cavities, "alphapocket " + run.options.version + " pockets of " + run.file);
     if (pdb.left_out > 0)
       warnings_.push_back("pockets.pdb: " + std::to_string(pdb.left_out) +
                           " pseudo-atoms left out, beyond the PDB columns' range (report.json has every cavity)");
     files.emplace_back("pockets.pdb", std::move(pdb.text));
   }
-  if (selection_.tunnels && run.paths) {
+  if (selection_.tunnels) {
     files.emplace_back("tunnels.csv", tunnels_csv(run));
     files.emplace_back("tunnel_profiles.csv", tunnel_profiles_csv(run));
-    const std::vector<TunnelPath> no_ways(cavities.tunnels.size());
-    PocketPdb tunnels = tunnel_pdb(run.cycle_paths ? *run.cycle_paths : no_ways, *run.paths,
-                                   "alphapocket " + run.version + " tunnels of " + run.file);
+    PocketPdb tunnels = tunnel_pdb(run.cycle_paths, run.paths,
+                                   "alphapocket " + run.options.version + " tunnels of " + run.file);
     if (tunnels.left_out > 0)
       warnings_.push_back("tunnels.pdb: " + std::to_string(tunnels.left_out) +
                           " pseudo-atoms left out, beyond the PDB columns' range");
     files.emplace_back("tunnels.pdb", std::move(tunnels.text));
   }
   const PocketMeshes* meshes = nullptr;  // those written
-  if (selection_.meshes && !run.mesh_format.empty()) {
-    if (!run.meshes) alpha::fail("PocketOutputDir: a mesh format but no meshes", alpha::ErrorKind::Misuse);
-    meshes = run.meshes;
+  if (selection_.meshes && run.meshes) {
+    meshes = &*run.meshes;
     std::vector<std::string> names;
     const auto mesh_file = [&](const std::string& name, const TriangleMesh& mesh) {
       MeshFileContent file = mesh_file_content((path_ / name).string(), mesh);
@@ -208,11 +206,11 @@ std::vector<std::string> PocketOutputDir::write(const PocketRun& run, const nloh
         files.emplace_back(fs::relative(file.companion_path, path_).string(), std::move(file.companion));
       names.push_back(fs::path(name).filename().string());
     };
-    mesh_file(molecule_mesh_path(run.mesh_format), meshes->surface);
+    mesh_file(molecule_mesh_path(run.mesh_format()), meshes->surface);
     for (std::size_t i = 0; i < meshes->pockets.size(); ++i)
-      mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format), meshes->pockets[i]);
+      mesh_file(cavity_mesh_path("pocket", i + 1, run.mesh_format()), meshes->pockets[i]);
     for (std::size_t i = 0; i < meshes->voids.size(); ++i)
-      mesh_file(cavity_mesh_path("void", i + 1, run.mesh_format), meshes->voids[i]);
+      mesh_file(cavity_mesh_path("void", i + 1, run.mesh_format()), meshes->voids[i]);
     files.emplace_back(kMeshlabProject, meshlab_project(names));
   }
   if (selection_.html) {

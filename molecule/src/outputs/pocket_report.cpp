@@ -41,7 +41,7 @@ json lining_residues(const std::vector<Atom>& atoms, const std::vector<alpha::In
 }
 
 json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const std::string& kind) {
-  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::vector<Atom>& atoms = run.structure.atoms;
   json mouth_areas = json::array();
   std::size_t mouths_to_outside = 0;
   for (const Mouth& m : c.mouths) {
@@ -69,11 +69,11 @@ json cavity_entry(const PocketRun& run, const Cavity& c, std::size_t rank, const
       {"max_probe_radius", length(c.max_probe_radius)},
       {"close_alpha_sq", c.close_alpha_sq},
       {"fill_alpha_sq", c.fill_alpha_sq},
-      {"mean_plddt", mean_plddt(*run.structure, c.lining_atoms)},
+      {"mean_plddt", mean_plddt(run.structure, c.lining_atoms)},
       {"lining_atoms", lining_atoms(atoms, c.lining_atoms)},
       {"lining_residues", lining_residues(atoms, residues_of(atoms, c.lining_atoms))},
   };
-  if (!run.mesh_format.empty()) e["mesh"] = cavity_mesh_path(kind, rank, run.mesh_format);
+  if (!run.mesh_format().empty()) e["mesh"] = cavity_mesh_path(kind, rank, run.mesh_format());
   return e;
 }
 
@@ -93,7 +93,7 @@ json holding(const LigandSite& l) {
 json ligand_list(const PocketRun& run) {
   json out = json::array();
   for (const LigandSite& l : ligands_of(run)) {
-    const HeteroGroup& g = run.structure->hetero_groups.at(l.group);
+    const HeteroGroup& g = run.structure.hetero_groups.at(l.group);
     LigandPlace place = ligand_place(g, l);
     out.push_back({{"id", ligand_id(g)},
                    {"name", g.residue_name},
@@ -126,7 +126,7 @@ json site_list(const PocketRun& run) {
                    {"sa_volume", length(c.sa_volume)},
                    {"center", point(s.center)},
                    {"mean_plddt", s.mean_plddt},
-                   {"lining_residues", lining_residues(run.structure->atoms, s.residues)},
+                   {"lining_residues", lining_residues(run.structure.atoms, s.residues)},
                    {"ligands", s.ligands}});
   }
   return out;
@@ -162,7 +162,7 @@ json tunnel_entry(const std::vector<Atom>& atoms, const TunnelEntry& t) {
 
 json tunnel_list(const PocketRun& run) {
   json out = json::array();
-  for (const TunnelEntry& t : tunnel_entries(run)) out.push_back(tunnel_entry(run.structure->atoms, t));
+  for (const TunnelEntry& t : tunnel_entries(run)) out.push_back(tunnel_entry(run.structure.atoms, t));
   return out;
 }
 
@@ -175,7 +175,7 @@ std::string cavity_mesh_path(const std::string& kind, std::size_t rank, const st
 std::string molecule_mesh_path(const std::string& format) { return "meshes/surface." + format; }
 
 json report_input(const PocketRun& run) {
-  const StructureReport& r = run.structure->report;
+  const StructureReport& r = run.structure.report;
   return {
       {"file", run.file},
       {"format", r.format},
@@ -198,31 +198,31 @@ json report_input(const PocketRun& run) {
 
 json report_parameters(const PocketRun& run) {
   return {
-      {"probe", run.options.probe},
-      {"min_volume", run.options.min_volume},
-      {"split_persistence", run.options.split_persistence},
-      {"split_volume", run.options.split_volume},
-      {"split_min_volume", run.options.split_min_volume},
-      {"min_plddt", run.min_plddt},
-      {"radii", run.radii},
-      {"tunnels_from", run.tunnels_from},
-      {"tunnel_probe", run.tunnel_options.probe},
-      {"pores", run.tunnel_options.pores},
+      {"probe", run.options.cavities.probe},
+      {"min_volume", run.options.cavities.min_volume},
+      {"split_persistence", run.options.cavities.split_persistence},
+      {"split_volume", run.options.cavities.split_volume},
+      {"split_min_volume", run.options.cavities.split_min_volume},
+      {"min_plddt", run.options.structure.min_plddt},
+      {"radii", run.radii()},
+      {"tunnels_from", run.options.tunnels_from},
+      {"tunnel_probe", run.options.tunnels.probe},
+      {"pores", run.options.tunnels.pores},
       {"alpha_sq", 0.0},
   };
 }
 
 json report_molecule(const PocketRun& run) {
-  json molecule = {{"atoms", run.structure->atoms.size()},
-                   {"sa_area", length(run.search->cavities.sa_area)},
-                   {"sa_volume", length(run.search->cavities.sa_volume)},
-                   {"pockets", run.search->cavities.pockets.size()},
-                   {"voids", run.search->cavities.voids.size()},
-                   {"sites", run.search->cavities.sites.size()},
-                   {"tunnels", run.search->cavities.tunnels.size()},
-                   {"mean_plddt", mean_plddt(*run.structure)},
-                   {"tunnel_paths", run.paths ? run.paths->size() : 0}};
-  if (!run.mesh_format.empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format);
+  json molecule = {{"atoms", run.structure.atoms.size()},
+                   {"sa_area", length(run.search.cavities.sa_area)},
+                   {"sa_volume", length(run.search.cavities.sa_volume)},
+                   {"pockets", run.search.cavities.pockets.size()},
+                   {"voids", run.search.cavities.voids.size()},
+                   {"sites", run.search.cavities.sites.size()},
+                   {"tunnels", run.search.cavities.tunnels.size()},
+                   {"mean_plddt", mean_plddt(run.structure)},
+                   {"tunnel_paths", run.paths.size()}};
+  if (!run.mesh_format().empty()) molecule["mesh"] = molecule_mesh_path(run.mesh_format());
   return molecule;
 }
 
@@ -240,12 +240,12 @@ json report_profile(const TunnelPath& p) {
 
 json pocket_report(const PocketRun& run) {
   return {
-      {"alphapocket", run.version},
+      {"alphapocket", run.options.version},
       {"input", report_input(run)},
       {"parameters", report_parameters(run)},
       {"molecule", report_molecule(run)},
-      {"pockets", cavity_list(run, run.search->cavities.pockets, "pocket")},
-      {"voids", cavity_list(run, run.search->cavities.voids, "void")},
+      {"pockets", cavity_list(run, run.search.cavities.pockets, "pocket")},
+      {"voids", cavity_list(run, run.search.cavities.voids, "void")},
       {"sites", site_list(run)},
       {"ligands", ligand_list(run)},
       {"tunnels", tunnel_list(run)},

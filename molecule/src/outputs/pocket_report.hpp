@@ -18,7 +18,7 @@
 #include "molecule/ligand_sites.hpp"
 #include "molecule/structure.hpp"
 #include "molecule/tunnel_paths.hpp"
-#include "outputs/pocket_run.hpp"
+#include "molecule/pocket_run.hpp"
 
 namespace molecule {
 

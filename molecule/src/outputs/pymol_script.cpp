@@ -45,7 +45,7 @@ std::string select_lines(const std::string& name, const std::string& obj, const 
 
 std::string header(const PocketRun& run, const ViewerScene& scene) {
   // No ';' in a comment: PyMOL's parser splits a line there first.
-  std::string s = "# alphapocket " + printable_ascii(run.version, ";") + ": pockets of " +
+  std::string s = "# alphapocket " + printable_ascii(run.options.version, ";") + ": pockets of " +
                   printable_ascii(run.file, ";") + "\n";
   s += "# Open with `pymol pockets.pml` (from any directory) or `@pockets.pml` inside PyMOL: it loads\n";
   s += "# structure.cif beside it as " + scene.object + " (the atoms searched and the ligands).\n";

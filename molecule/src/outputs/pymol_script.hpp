@@ -28,7 +28,7 @@
 #pragma once
 #include <string>
 
-#include "outputs/pocket_run.hpp"
+#include "molecule/pocket_run.hpp"
 #include "outputs/viewer_scene.hpp"
 
 namespace molecule {

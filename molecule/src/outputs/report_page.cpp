@@ -97,7 +97,7 @@ json residue_ids(const std::vector<Atom>& atoms, const std::vector<alpha::Index>
 // cavity's MS volume, depth and mouths, the tunnels (tunnel_entries), the
 // ligands, and report.json's input, parameters and molecule.
 json page_data(const PocketRun& run) {
-  const Structure& st = *run.structure;
+  const Structure& st = run.structure;
   json sites = json::array();
   for (const SiteEntry& s : site_entries(run)) {
     const Cavity& c = *s.cavity;
@@ -125,18 +125,17 @@ json page_data(const PocketRun& run) {
                        {"profile", t.way ? report_profile(*t.way) : json::array()},
                        {"residues", residue_ids(st.atoms, t.residues)}});
   json ligands = json::array();
-  if (run.ligands)
-    for (const LigandSite& l : *run.ligands) {
-      const HeteroGroup& g = st.hetero_groups.at(l.group);
-      LigandPlace place = ligand_place(g, l);
-      ligands.push_back({{"id", ligand_id(g)},
-                         {"kept", g.kept},
-                         {"site", std::move(place.site)},
-                         {"nearest_site", std::move(place.nearest_site)},
-                         {"distance", std::move(place.distance)}});
-    }
+  for (const LigandSite& l : run.ligands) {
+    const HeteroGroup& g = st.hetero_groups.at(l.group);
+    LigandPlace place = ligand_place(g, l);
+    ligands.push_back({{"id", ligand_id(g)},
+                       {"kept", g.kept},
+                       {"site", std::move(place.site)},
+                       {"nearest_site", std::move(place.nearest_site)},
+                       {"distance", std::move(place.distance)}});
+  }
   return {{"file", run.file},
-          {"alphapocket", run.version},
+          {"alphapocket", run.options.version},
           {"input", report_input(run)},
           {"parameters", report_parameters(run)},
           {"molecule", report_molecule(run)},
@@ -149,7 +148,7 @@ json page_data(const PocketRun& run) {
 
 json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std::string& structure_url,
                        const PocketMeshes* meshes) {
-  const Structure& structure = *run.structure;
+  const Structure& structure = run.structure;
   // Each lining atom's whole residue, as the scripts show it.
   std::map<std::string, std::vector<std::size_t>> residue_atoms;
   std::vector<std::string> residue_of(structure.atoms.size());
@@ -225,7 +224,7 @@ json molviewspec_scene(const PocketRun& run, const ViewerScene& scene, const std
                                        {"text", id}, {"label_size", 1.5}}));
   }
   if (!texts.empty()) top.push_back(std::move(labels));
-  return {{"metadata", {{"version", "1"}, {"title", "alphapocket " + run.version + ": sites of " + run.file}}},
+  return {{"metadata", {{"version", "1"}, {"title", "alphapocket " + run.options.version + ": sites of " + run.file}}},
           {"root", std::move(root)}};
 }
 

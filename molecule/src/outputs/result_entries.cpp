@@ -16,21 +16,19 @@ using json = nlohmann::ordered_json;
 using report_number::length;
 using report_number::score;
 
-std::size_t num_paths(const PocketRun& run) { return run.paths ? run.paths->size() : 0; }
-
 // The way through cycle k of search->cavities.tunnels, or null when none
 // was found.
 const TunnelPath* cycle_path(const PocketRun& run, std::size_t k) {
-  if (!run.cycle_paths || k >= run.cycle_paths->size() || (*run.cycle_paths)[k].profile.empty()) return nullptr;
-  return &(*run.cycle_paths)[k];
+  if (k >= run.cycle_paths.size() || run.cycle_paths[k].profile.empty()) return nullptr;
+  return &run.cycle_paths[k];
 }
 
-// The index into *run.paths of the first path that runs through a cycle's
+// The index into run.paths of the first path that runs through a cycle's
 // bottleneck (crosses its killing triangle, or passes its bottleneck
 // centre), or npos.
 std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
-  for (std::size_t i = 0; i < num_paths(run); ++i) {
-    const TunnelPath& p = (*run.paths)[i];
+  for (std::size_t i = 0; i < run.paths.size(); ++i) {
+    const TunnelPath& p = run.paths[i];
     if (std::find(p.triangles.begin(), p.triangles.end(), cycle.bottleneck_triangle) != p.triangles.end()) return i;
     // Ties: another triangle with the same narrowest point (a ring of
     // cocircular atoms, all triangles of its disc centred alike).
@@ -43,8 +41,8 @@ std::size_t path_through(const PocketRun& run, const Tunnel& cycle) {
 }  // namespace
 
 std::vector<SiteEntry> site_entries(const PocketRun& run) {
-  const Structure& st = *run.structure;
-  const Cavities& cavities = run.search->cavities;
+  const Structure& st = run.structure;
+  const Cavities& cavities = run.search.cavities;
   const std::span<const LigandSite> ligands = ligands_of(run);
   std::vector<SiteEntry> out;
   for (const Site& s : cavities.sites) {
@@ -60,9 +58,9 @@ std::vector<SiteEntry> site_entries(const PocketRun& run) {
 bool TunnelEntry::is_cycle() const { return std::string_view(kind) == "cycle"; }
 
 std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
-  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::vector<Atom>& atoms = run.structure.atoms;
   std::vector<TunnelEntry> out;
-  const std::vector<Tunnel>& cycles = run.search->cavities.tunnels;
+  const std::vector<Tunnel>& cycles = run.search.cavities.tunnels;
   for (std::size_t k = 0; k < cycles.size(); ++k) {
     const Tunnel& t = cycles[k];
     const TunnelPath* way = cycle_path(run, k);
@@ -72,8 +70,8 @@ std::vector<TunnelEntry> tunnel_entries(const PocketRun& run) {
                    through == std::size_t(-1) ? json() : json(cycles.size() + through + 1), &t.lining_atoms,
                    residues_of(atoms, t.lining_atoms), way});
   }
-  for (std::size_t i = 0; i < num_paths(run); ++i) {
-    const TunnelPath& p = (*run.paths)[i];
+  for (std::size_t i = 0; i < run.paths.size(); ++i) {
+    const TunnelPath& p = run.paths[i];
     out.push_back({out.size() + 1, p.pore ? "pore" : "tunnel", p.pore ? json() : json(run.tunnel_starts.at(p.start)),
                    p.bottleneck_radius, p.bottleneck, length(p.length),
                    std::isfinite(p.curvature) ? json(length(p.curvature)) : json(), score(p.cost), json(), json(),
@@ -104,10 +102,10 @@ std::string ligand_id(const HeteroGroup& g) {
 }
 
 std::span<const LigandSite> ligands_of(const PocketRun& run) {
-  const std::span<const LigandSite> ligands = run.ligands ? std::span(*run.ligands) : std::span<const LigandSite>();
-  if (ligands.size() != run.structure->hetero_groups.size())
+  const std::span<const LigandSite> ligands = run.ligands;
+  if (ligands.size() != run.structure.hetero_groups.size())
     alpha::fail("pocket_report: " + std::to_string(ligands.size()) + " ligand sites for " +
-                    std::to_string(run.structure->hetero_groups.size()) + " hetero groups",
+                    std::to_string(run.structure.hetero_groups.size()) + " hetero groups",
                 alpha::ErrorKind::Misuse);
   return ligands;
 }

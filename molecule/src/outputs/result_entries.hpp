@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "outputs/pocket_run.hpp"
+#include "molecule/pocket_run.hpp"
 
 namespace molecule {
 

@@ -60,8 +60,8 @@ const Table kTunnelsTable{"tunnels",
 const Table kFailuresTable{"failures", {{"id", T}, {"path", T}, {"category", T}, {"message", T}}, 4, "id"};
 
 json table_rows(const PocketRun& run) {
-  const Structure& st = *run.structure;
-  const Cavities& cavities = run.search->cavities;
+  const Structure& st = run.structure;
+  const Cavities& cavities = run.search.cavities;
   json structure = json::array({st.report.format, int(st.report.predicted), st.atoms.size(), cavities.pockets.size(),
                                 cavities.voids.size(), cavities.sites.size(), cavities.tunnels.size(),
                                 length(cavities.sa_area), length(cavities.sa_volume), mean_plddt(st)});
@@ -122,9 +122,9 @@ std::string pockets_csv(const PocketRun& run) {
   std::string out =
       "rank,score,probability,sa_volume,ms_volume,sa_area,ms_area,mouths,mouth_area,depth,center_x,center_y,center_z,"
       "lining_residues,residues,mean_plddt\n";
-  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::vector<Atom>& atoms = run.structure.atoms;
   std::size_t rank = 0;
-  for (const Cavity& c : run.search->cavities.pockets) {
+  for (const Cavity& c : run.search.cavities.pockets) {
     out += std::to_string(++rank) + ',' + csv_number(score(c.score)) + ',' + csv_number(report_probability(c.probability));
     for (const double x : {length(c.sa_volume), length(c.ms_volume), length(c.sa_area), length(c.ms_area)})
       out += ',' + csv_number(x);
@@ -132,7 +132,7 @@ std::string pockets_csv(const PocketRun& run) {
     for (const double x : {length(c.mouth_area), length(c.depth), length(c.center.x), length(c.center.y),
                            length(c.center.z)})
       out += ',' + csv_number(x);
-    out += residue_columns(atoms, residues_of(atoms, c.lining_atoms)) + ',' + csv_number(mean_plddt(*run.structure, c.lining_atoms)) +
+    out += residue_columns(atoms, residues_of(atoms, c.lining_atoms)) + ',' + csv_number(mean_plddt(run.structure, c.lining_atoms)) +
            '\n';
   }
   return out;
@@ -142,7 +142,7 @@ std::string tunnels_csv(const PocketRun& run) {
   std::string out =
       "tunnel,kind,start,bottleneck_radius,bottleneck_x,bottleneck_y,bottleneck_z,length,curvature,cost,"
       "lining_residues,residues\n";
-  const std::vector<Atom>& atoms = run.structure->atoms;
+  const std::vector<Atom>& atoms = run.structure.atoms;
   for (const TunnelEntry& t : tunnel_entries(run)) {
     out += std::to_string(t.rank) + ',' + t.kind + ',' + table_value(t.start, false);
     for (const double x : {t.bottleneck_radius, t.bottleneck.x, t.bottleneck.y, t.bottleneck.z})

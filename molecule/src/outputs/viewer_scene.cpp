@@ -48,8 +48,8 @@ std::string viewer_object_name(const std::string& file) {
 }
 
 ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& ligand_ids) {
-  const Cavities& cavities = run.search->cavities;
-  const alpha::AlphaComplex& ac = run.search->shape->complex();
+  const Cavities& cavities = run.search.cavities;
+  const alpha::AlphaComplex& ac = run.search.shape->complex();
   const CavityColors colors = cavity_colors(cavities);
   ViewerScene scene;
   scene.object = viewer_object_name(run.file);
@@ -64,8 +64,8 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
     s.lining_ids = ids_of(c.lining_atoms);
     s.center = c.center;
     s.space = sink_spheres(ac, c);
-    if (!run.mesh_format.empty())
-      s.cast = cavity_mesh_path(is_void ? "void" : "pocket", index + 1, run.mesh_format);
+    if (!run.mesh_format().empty())
+      s.cast = cavity_mesh_path(is_void ? "void" : "pocket", index + 1, run.mesh_format());
     scene.cavities.push_back(std::move(s));
   };
   // In colour-rank order: the sites, then the pockets and voids that are no site.
@@ -82,22 +82,20 @@ ViewerScene viewer_scene(const PocketRun& run, const std::vector<std::size_t>& l
     scene.tunnels.push_back({"tunnel_" + std::to_string(i + 1), ids_of(t.lining_atoms),
                              {t.bottleneck_center, t.bottleneck_radius}});
   }
-  if (run.paths) {
-    const std::vector<Atom>& atoms = run.structure->atoms;
-    // Each atom's residue once, not once a path.
-    std::vector<std::string> residue_of(atoms.size());
-    if (!run.paths->empty())
-      for (std::size_t i = 0; i < atoms.size(); ++i) residue_of[i] = residue_id(atoms[i]);
-    for (std::size_t k = 0; k < run.paths->size(); ++k) {
-      const TunnelPath& p = (*run.paths)[k];
-      ScenePath path{"tunnel_" + std::to_string(cavities.tunnels.size() + k + 1), tunnel_color(k), {}, {}};
-      std::set<std::string> residues;
-      for (const alpha::Index i : p.lining_atoms) residues.insert(residue_of.at(i));
-      for (std::size_t i = 0; i < atoms.size(); ++i)
-        if (residues.count(residue_of[i])) path.lining_ids.push_back(i + 1);  // structure_copy's ids
-      for (const ProfilePoint& q : p.profile) path.spheres.push_back({q.x, q.radius});
-      scene.paths.push_back(std::move(path));
-    }
+  const std::vector<Atom>& atoms = run.structure.atoms;
+  // Each atom's residue once, not once a path.
+  std::vector<std::string> residue_of(atoms.size());
+  if (!run.paths.empty())
+    for (std::size_t i = 0; i < atoms.size(); ++i) residue_of[i] = residue_id(atoms[i]);
+  for (std::size_t k = 0; k < run.paths.size(); ++k) {
+    const TunnelPath& p = run.paths[k];
+    ScenePath path{"tunnel_" + std::to_string(cavities.tunnels.size() + k + 1), tunnel_color(k), {}, {}};
+    std::set<std::string> residues;
+    for (const alpha::Index i : p.lining_atoms) residues.insert(residue_of.at(i));
+    for (std::size_t i = 0; i < atoms.size(); ++i)
+      if (residues.count(residue_of[i])) path.lining_ids.push_back(i + 1);  // structure_copy's ids
+    for (const ProfilePoint& q : p.profile) path.spheres.push_back({q.x, q.radius});
+    scene.paths.push_back(std::move(path));
   }
   return scene;
 }
