@@ -4,8 +4,9 @@
 // tunnels (report.json, tunnels.csv and batch's, tunnel_profiles.csv,
 // report.html), and the values their entries share, rounded as
 // report.json has them (outputs/report_numbers.hpp). The writers only
-// format them; each writer makes the list it shows (a run does not keep
-// them).
+// format them. Each writer makes the list it shows from the run, which does
+// not keep them: a kept list would go stale when a field of the run changes,
+// and making them is cheap (docs/architecture.md).
 #pragma once
 #include <cstddef>
 #include <span>
